@@ -1,0 +1,64 @@
+// asp_grid_*: creation, queries and FFT planning of grids.
+#include "capi/firewall.hpp"
+#include "capi/handles.hpp"
+#include "core/checks.hpp"
+
+using asp::capi::guarded;
+
+namespace {
+int create_grid(const char *function, int dimension, int64_t nx, int64_t ny, double lx,
+                double ly, asp_grid **out) {
+  if (out != nullptr) *out = nullptr;
+  return guarded(function, [&] {
+    asp::require_not_null(out, "out");
+    std::unique_ptr<asp_grid> handle(new asp_grid);
+    handle->grid = asp::Grid::create(dimension, nx, ny, lx, ly);
+    *out = handle.release();
+  });
+}
+}  // namespace
+
+extern "C" {
+
+int asp_grid_create_1d(int64_t nx, double lx, asp_grid **out) {
+  return create_grid("asp_grid_create_1d", 1, nx, 1, lx, 1.0, out);
+}
+
+int asp_grid_create_2d(int64_t nx, int64_t ny, double lx, double ly, asp_grid **out) {
+  return create_grid("asp_grid_create_2d", 2, nx, ny, lx, ly, out);
+}
+
+void asp_grid_destroy(asp_grid *grid) { delete grid; }
+
+int asp_grid_get_shape(const asp_grid *grid, int *dimension, int64_t *nx, int64_t *ny,
+                       int64_t *n_pixels) {
+  return guarded("asp_grid_get_shape", [&] {
+    asp::require_not_null(grid, "grid");
+    const asp::Grid &g = *grid->grid;
+    if (dimension) *dimension = g.dimension();
+    if (nx) *nx = g.nx();
+    if (ny) *ny = g.ny();
+    if (n_pixels) *n_pixels = g.n_pixels();
+  });
+}
+
+int asp_grid_get_box(const asp_grid *grid, double *lx, double *ly) {
+  return guarded("asp_grid_get_box", [&] {
+    asp::require_not_null(grid, "grid");
+    if (lx) *lx = grid->grid->lx();
+    if (ly) *ly = grid->grid->ly();
+  });
+}
+
+int asp_grid_set_fft_planning(asp_grid *grid, int planning) {
+  return guarded("asp_grid_set_fft_planning", [&] {
+    asp::require_not_null(grid, "grid");
+    if (planning != ASP_FFT_ESTIMATE && planning != ASP_FFT_MEASURE)
+      throw asp::Error(asp::Status::invalid_argument,
+                       "argument 'planning' must be ASP_FFT_ESTIMATE or ASP_FFT_MEASURE, got " +
+                           std::to_string(planning));
+    grid->grid->set_fft_planning(static_cast<asp::FftPlanning>(planning));
+  });
+}
+
+}  // extern "C"

@@ -1,0 +1,96 @@
+// asp_system_*: a contact problem, its parameters and its current state.
+#include <algorithm>
+
+#include "capi/firewall.hpp"
+#include "capi/handles.hpp"
+#include "core/checks.hpp"
+
+using asp::capi::guarded;
+
+extern "C" {
+
+int asp_system_create(const asp_grid *grid, double contact_modulus, asp_system **out) {
+  if (out != nullptr) *out = nullptr;
+  return guarded("asp_system_create", [&] {
+    asp::require_not_null(grid, "grid");
+    asp::require_not_null(out, "out");
+    std::unique_ptr<asp_system> handle(new asp_system);
+    handle->system.reset(new asp::System(*grid->grid, contact_modulus));
+    *out = handle.release();
+  });
+}
+
+void asp_system_destroy(asp_system *system) { delete system; }
+
+int asp_system_set_topography(asp_system *system, const double *heights, int64_t n) {
+  return guarded("asp_system_set_topography", [&] {
+    asp::require_not_null(system, "system");
+    asp::require_array(heights, n, system->system->grid().n_pixels(), "heights");
+    asp::require_finite_array(heights, n, "heights");
+    system->system->set_topography(heights);
+  });
+}
+
+int asp_system_set_k0(asp_system *system, double k0) {
+  return guarded("asp_system_set_k0", [&] {
+    asp::require_not_null(system, "system");
+    system->system->set_k0(k0);
+  });
+}
+
+int asp_system_set_reference_pressure(asp_system *system, double reference_pressure) {
+  return guarded("asp_system_set_reference_pressure", [&] {
+    asp::require_not_null(system, "system");
+    asp::require_non_negative(reference_pressure, "reference_pressure");
+    system->system->set_reference_pressure(reference_pressure);
+  });
+}
+
+int asp_system_reset(asp_system *system) {
+  return guarded("asp_system_reset", [&] {
+    asp::require_not_null(system, "system");
+    system->system->reset_state();
+  });
+}
+
+int asp_system_get(const asp_system *system, int key, double *value) {
+  return guarded("asp_system_get", [&] {
+    asp::require_not_null(system, "system");
+    asp::require_not_null(value, "value");
+    const asp::System &s = *system->system;
+    switch (key) {
+      case ASP_CONTACT_FRACTION: *value = s.contact_fraction(); break;
+      case ASP_MEAN_PRESSURE: *value = s.mean_pressure(); break;
+      case ASP_MEAN_GAP: *value = s.mean_gap(); break;
+      case ASP_ELASTIC_ENERGY: *value = s.elastic_energy(); break;
+      case ASP_PENETRATION: *value = s.state().penetration; break;
+      case ASP_TOTAL_FORCE: *value = s.mean_pressure() * s.grid().area(); break;
+      case ASP_K0: *value = s.substrate().k0(); break;
+      case ASP_REFERENCE_PRESSURE: *value = s.last_reference_pressure(); break;
+      default:
+        throw asp::Error(asp::Status::invalid_argument,
+                         "argument 'key' is not an ASP_* result key: " + std::to_string(key));
+    }
+  });
+}
+
+int asp_system_get_field(const asp_system *system, int field, double *values, int64_t n) {
+  return guarded("asp_system_get_field", [&] {
+    asp::require_not_null(system, "system");
+    const asp::System &s = *system->system;
+    asp::require_array(values, n, s.grid().n_pixels(), "values");
+    const asp::Field *source = nullptr;
+    switch (field) {
+      case ASP_FIELD_PRESSURE: source = &s.state().pressure; break;
+      case ASP_FIELD_GAP: source = &s.state().gap; break;
+      case ASP_FIELD_TOPOGRAPHY: source = &s.heights(); break;
+      case ASP_FIELD_DISPLACEMENT: s.displacement(values); return;
+      default:
+        throw asp::Error(asp::Status::invalid_argument,
+                         "argument 'field' is not an ASP_FIELD_* key: " + std::to_string(field));
+    }
+    std::copy(source->begin(), source->end(), values);
+  });
+}
+
+}  // extern "C"

@@ -1,0 +1,101 @@
+// asp_topography_*: surface generators and statistics, filling the caller's arrays.
+#include "capi/firewall.hpp"
+#include "capi/handles.hpp"
+#include "core/checks.hpp"
+#include "physics/surface_statistics.hpp"
+#include "physics/topography.hpp"
+
+using asp::capi::guarded;
+
+namespace {
+// The grid of an output array of n heights, after checking both.
+const asp::Grid &grid_for(const asp_grid *grid, const void *heights, int64_t n) {
+  asp::require_not_null(grid, "grid");
+  asp::require_array(heights, n, grid->grid->n_pixels(), "heights");
+  return *grid->grid;
+}
+}  // namespace
+
+extern "C" {
+
+int asp_topography_flat(const asp_grid *grid, double *heights, int64_t n) {
+  return guarded("asp_topography_flat",
+                 [&] { asp::flat_topography(grid_for(grid, heights, n), heights); });
+}
+
+int asp_topography_sphere(const asp_grid *grid, double radius, double *heights, int64_t n) {
+  return guarded("asp_topography_sphere", [&] {
+    asp::sphere_topography(grid_for(grid, heights, n), radius, heights);
+  });
+}
+
+int asp_topography_paraboloid(const asp_grid *grid, double radius, double *heights,
+                              int64_t n) {
+  return guarded("asp_topography_paraboloid", [&] {
+    asp::paraboloid_topography(grid_for(grid, heights, n), radius, heights);
+  });
+}
+
+int asp_topography_sinusoid(const asp_grid *grid, double amplitude, int64_t periods_x,
+                            int64_t periods_y, double *heights, int64_t n) {
+  return guarded("asp_topography_sinusoid", [&] {
+    asp::sinusoid_topography(grid_for(grid, heights, n), amplitude, periods_x, periods_y,
+                             heights);
+  });
+}
+
+int asp_topography_double_sinewave(const asp_grid *grid, double amplitude,
+                                   double ripple_amplitude, int64_t ripple_periods,
+                                   double *heights, int64_t n) {
+  return guarded("asp_topography_double_sinewave", [&] {
+    asp::double_sinewave_topography(grid_for(grid, heights, n), amplitude, ripple_amplitude,
+                                    ripple_periods, heights);
+  });
+}
+
+int asp_topography_self_affine(const asp_grid *grid, double hurst, double long_cutoff,
+                               double rolloff, double short_cutoff, int normalise,
+                               double target, int64_t seed, double *heights, int64_t n) {
+  return guarded("asp_topography_self_affine", [&] {
+    const asp::Grid &g = grid_for(grid, heights, n);
+    if (normalise != ASP_RMS_HEIGHT && normalise != ASP_RMS_SLOPE)
+      throw asp::Error(asp::Status::invalid_argument,
+                       "argument 'normalise' must be ASP_RMS_HEIGHT or ASP_RMS_SLOPE, got " +
+                           std::to_string(normalise));
+    asp::SelfAffineParameters p;
+    p.hurst = hurst;
+    p.long_cutoff = long_cutoff;
+    p.rolloff = rolloff;
+    p.short_cutoff = short_cutoff;
+    p.norm = static_cast<asp::RoughnessNorm>(normalise);
+    p.target = target;
+    p.seed = static_cast<std::uint64_t>(seed);
+    asp::self_affine_topography(g, p, heights);
+  });
+}
+
+int asp_topography_statistics(const asp_grid *grid, const double *heights, int64_t n,
+                              double *rms_height, double *rms_slope, double *rms_curvature) {
+  return guarded("asp_topography_statistics", [&] {
+    const asp::Grid &g = grid_for(grid, heights, n);
+    asp::require_finite_array(heights, n, "heights");
+    const asp::SurfaceStatistics s = asp::surface_statistics(g, heights);
+    if (rms_height) *rms_height = s.rms_height;
+    if (rms_slope) *rms_slope = s.rms_slope;
+    if (rms_curvature) *rms_curvature = s.rms_curvature;
+  });
+}
+
+int asp_topography_power_spectrum(const asp_grid *grid, const double *heights, int64_t n,
+                                  int64_t n_bins, double *q, double *c) {
+  return guarded("asp_topography_power_spectrum", [&] {
+    const asp::Grid &g = grid_for(grid, heights, n);
+    asp::require_finite_array(heights, n, "heights");
+    asp::require_at_least(n_bins, 1, "n_bins");
+    asp::require_not_null(q, "q");
+    asp::require_not_null(c, "c");
+    asp::radial_power_spectrum(g, heights, n_bins, q, c);
+  });
+}
+
+}  // extern "C"

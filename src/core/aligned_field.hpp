@@ -1,0 +1,38 @@
+// Fields are contiguous arrays allocated by FFTW's allocator, so that every array has the
+// alignment the FFT plans were made for and plans can be executed on any field.
+#pragma once
+
+#include <complex>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace asp {
+
+// Bytes currently held by fields; the benchmark reads it to report memory per pixel.
+std::int64_t field_bytes_in_use();
+std::int64_t field_bytes_peak();
+void reset_field_bytes_peak();
+
+void *allocate_field_bytes(std::size_t bytes);
+void free_field_bytes(void *pointer, std::size_t bytes) noexcept;
+
+template <class T>
+struct FieldAllocator {
+  using value_type = T;
+  FieldAllocator() = default;
+  template <class U>
+  FieldAllocator(const FieldAllocator<U> &) noexcept {}
+  T *allocate(std::size_t n) { return static_cast<T *>(allocate_field_bytes(n * sizeof(T))); }
+  void deallocate(T *p, std::size_t n) noexcept { free_field_bytes(p, n * sizeof(T)); }
+  template <class U>
+  bool operator==(const FieldAllocator<U> &) const noexcept { return true; }
+  template <class U>
+  bool operator!=(const FieldAllocator<U> &) const noexcept { return false; }
+};
+
+using Complex = std::complex<double>;
+using Field = std::vector<double, FieldAllocator<double>>;            // real space, x fastest
+using Spectrum = std::vector<Complex, FieldAllocator<Complex>>;       // r2c half spectrum
+
+}  // namespace asp

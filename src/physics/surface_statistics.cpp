@@ -1,0 +1,79 @@
+#include "physics/surface_statistics.hpp"
+
+#include <cmath>
+#include <vector>
+
+namespace asp {
+namespace {
+
+// Calls visit(|q|, |h^_q|^2, modes) for every non-zero entry of the half spectrum, h^ the DFT
+// divided by N, modes the number of full-spectrum modes the entry stands for (1 or 2).
+template <class Visit>
+void for_each_mode(const Grid &grid, const double *heights, Visit visit) {
+  Spectrum s = grid.make_spectrum();
+  grid.fft().forward(heights, s.data());
+  const double n = static_cast<double>(grid.n_pixels());
+  const std::int64_t snx = grid.spectral_nx();
+  for (std::int64_t ky = 0; ky < grid.ny(); ++ky)
+    for (std::int64_t kx = 0; kx < snx; ++kx) {
+      if (kx == 0 && ky == 0) continue;
+      const double qx = grid.qx(kx), qy = grid.qy(ky);
+      const double power = std::norm(s[static_cast<std::size_t>(kx + snx * ky)]) / (n * n);
+      visit(std::sqrt(qx * qx + qy * qy), power, grid.hermitian_weight(kx));
+    }
+}
+
+}  // namespace
+
+SurfaceStatistics surface_statistics(const Grid &grid, const double *heights) {
+  double sums[3] = {0.0, 0.0, 0.0};
+  for_each_mode(grid, heights, [&](double q, double power, double modes) {
+    const double q2 = q * q;
+    sums[0] += modes * power;
+    sums[1] += modes * q2 * power;
+    sums[2] += modes * q2 * q2 * power;
+  });
+  grid.reductions().combine_sums(sums, 3);
+  SurfaceStatistics s;
+  s.rms_height = std::sqrt(sums[0]);
+  s.rms_slope = std::sqrt(sums[1]);
+  s.rms_curvature = std::sqrt(grid.dimension() == 2 ? sums[2] / 4.0 : sums[2]);
+  return s;
+}
+
+void radial_power_spectrum(const Grid &grid, const double *heights, std::int64_t n_bins,
+                           double *q, double *c) {
+  const double qx_max = grid.qx(grid.nx() / 2);
+  const double qy_max = grid.dimension() == 2 ? std::fabs(grid.qy(grid.ny() / 2)) : 0.0;
+  const double q_max = std::sqrt(qx_max * qx_max + qy_max * qy_max);
+  const double width = q_max > 0.0 ? q_max / static_cast<double>(n_bins) : 1.0;
+  // C(q) = A/(2 pi)^2 |h^_q|^2 in 2D and L/(2 pi) |h^_q|^2 in 1D: then the sum of C over the
+  // modes times the area of one mode in q-space, (2 pi)^2/A or 2 pi/L, is the mean square.
+  const double two_pi = 6.283185307179586476925286766559;
+  const double density =
+      grid.dimension() == 2 ? grid.area() / (two_pi * two_pi) : grid.lx() / two_pi;
+  const std::size_t bins = static_cast<std::size_t>(n_bins);
+  std::vector<double> sum_q(bins, 0.0), sum_c(bins, 0.0), count(bins, 0.0);
+  for_each_mode(grid, heights, [&](double qn, double power, double modes) {
+    std::int64_t b = static_cast<std::int64_t>(qn / width);
+    if (b >= n_bins) b = n_bins - 1;  // q_max itself lands on the upper edge
+    const std::size_t k = static_cast<std::size_t>(b);
+    sum_q[k] += modes * qn;
+    sum_c[k] += modes * density * power;
+    count[k] += modes;
+  });
+  grid.reductions().combine_sums(sum_q.data(), static_cast<int>(bins));
+  grid.reductions().combine_sums(sum_c.data(), static_cast<int>(bins));
+  grid.reductions().combine_sums(count.data(), static_cast<int>(bins));
+  for (std::size_t b = 0; b < bins; ++b) {
+    if (count[b] > 0.0) {
+      q[b] = sum_q[b] / count[b];
+      c[b] = sum_c[b] / count[b];
+    } else {
+      q[b] = (static_cast<double>(b) + 0.5) * width;
+      c[b] = 0.0;
+    }
+  }
+}
+
+}  // namespace asp

@@ -1,0 +1,23 @@
+// Statistics of a topography (thesis eqs. 52-54, after Jacobs et al. 2017), computed from the
+// spectrum so that they are exact for the band-limited surface the FFT represents.
+#pragma once
+
+#include <cstdint>
+
+#include "core/grid.hpp"
+
+namespace asp {
+
+struct SurfaceStatistics {
+  double rms_height = 0.0;     // sqrt(<(h - <h>)^2>)
+  double rms_slope = 0.0;      // sqrt(<|grad h|^2>)
+  double rms_curvature = 0.0;  // 2D: sqrt(<(laplacian h)^2>/4); 1D: sqrt(<h''^2>)
+};
+
+SurfaceStatistics surface_statistics(const Grid &grid, const double *heights);
+
+// Radially averaged power spectrum, see asp_topography_power_spectrum in the public header.
+void radial_power_spectrum(const Grid &grid, const double *heights, std::int64_t n_bins,
+                           double *q, double *c);
+
+}  // namespace asp

@@ -1,0 +1,62 @@
+// A contact problem on a grid: the substrate, the rigid topography and the current state.
+// The state is kept between solves so that a load sweep warm-starts.
+#pragma once
+
+#include "core/aligned_field.hpp"
+#include "core/grid.hpp"
+#include "physics/periodic_halfspace.hpp"
+
+namespace asp {
+
+// The state every solver leaves behind. Pressure and gap are consistent with each other:
+// gap = K^-1 pressure - (h - max h) - penetration.
+struct ContactState {
+  Field pressure;
+  Field gap;
+  double penetration = 0.0;
+};
+
+class System {
+ public:
+  System(const Grid &grid, double contact_modulus);
+
+  const Grid &grid() const { return grid_; }
+  const PeriodicHalfSpace &substrate() const { return substrate_; }
+  void set_k0(double k0) { substrate_.set_k0(k0); }
+
+  // Copies the heights and resets the state.
+  void set_topography(const double *heights);
+  const Field &heights() const { return heights_; }
+  double max_height() const { return max_height_; }
+
+  // 0 selects the default; see asp_system_set_reference_pressure.
+  void set_reference_pressure(double p) { reference_pressure_override_ = p; }
+  // The reference pressure for a solve whose own natural scale is `control_scale`
+  // (|mean pressure| or K~(0)|penetration|), used only when the surface has no slope.
+  double reference_pressure(double control_scale) const;
+  double last_reference_pressure() const { return last_reference_pressure_; }
+  void remember_reference_pressure(double p) { last_reference_pressure_ = p; }
+
+  ContactState &state() { return state_; }
+  const ContactState &state() const { return state_; }
+  void reset_state();
+
+  // Observables of the current state.
+  double contact_fraction() const;
+  double mean_pressure() const;
+  double mean_gap() const;
+  double elastic_energy() const;  // (a/2) sum p u
+  void displacement(double *out) const;
+
+ private:
+  const Grid &grid_;
+  PeriodicHalfSpace substrate_;
+  Field heights_;
+  double max_height_ = 0.0;
+  double slope_pressure_ = 0.0;  // E* h'_rms / 2
+  double reference_pressure_override_ = 0.0;
+  double last_reference_pressure_ = 0.0;
+  ContactState state_;
+};
+
+}  // namespace asp

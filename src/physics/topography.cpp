@@ -1,0 +1,137 @@
+#include "physics/topography.hpp"
+
+#include <cmath>
+
+#include "core/checks.hpp"
+#include "core/error.hpp"
+#include "core/random.hpp"
+#include "physics/surface_statistics.hpp"
+
+namespace asp {
+namespace {
+constexpr double two_pi = 6.283185307179586476925286766559;
+
+double x_of(const Grid &g, std::int64_t i) { return g.lx() * static_cast<double>(i) / g.nx(); }
+double y_of(const Grid &g, std::int64_t j) {
+  return g.dimension() == 2 ? g.ly() * static_cast<double>(j) / g.ny() : 0.0;
+}
+
+// Squared distance of pixel (i, j) from the centre of the box (the axis in 1D).
+template <class Shape>
+void fill_radial(const Grid &g, double *heights, Shape shape) {
+  const double cx = 0.5 * g.lx();
+  const double cy = g.dimension() == 2 ? 0.5 * g.ly() : 0.0;
+  for (std::int64_t j = 0; j < g.ny(); ++j)
+    for (std::int64_t i = 0; i < g.nx(); ++i) {
+      const double dx = x_of(g, i) - cx, dy = y_of(g, j) - cy;
+      heights[i + g.nx() * j] = shape(dx * dx + dy * dy);
+    }
+}
+}  // namespace
+
+void flat_topography(const Grid &grid, double *heights) {
+  for (std::int64_t k = 0; k < grid.n_pixels(); ++k) heights[k] = 0.0;
+}
+
+void sphere_topography(const Grid &grid, double radius, double *heights) {
+  require_positive(radius, "radius");
+  const double r2_max = radius * radius;
+  fill_radial(grid, heights, [&](double r2) {
+    return r2 < r2_max ? std::sqrt(r2_max - r2) - radius : -radius;
+  });
+}
+
+void paraboloid_topography(const Grid &grid, double radius, double *heights) {
+  require_positive(radius, "radius");
+  fill_radial(grid, heights, [&](double r2) { return -r2 / (2.0 * radius); });
+}
+
+void sinusoid_topography(const Grid &grid, double amplitude, std::int64_t periods_x,
+                         std::int64_t periods_y, double *heights) {
+  require_finite(amplitude, "amplitude");
+  require_at_least(periods_x, 1, "periods_x");
+  require_at_least(periods_y, 0, "periods_y");
+  if (grid.dimension() == 1 && periods_y != 0)
+    throw Error(Status::invalid_argument,
+                "argument 'periods_y' must be 0 on a 1D grid, got " + std::to_string(periods_y));
+  const double kx = two_pi * static_cast<double>(periods_x) / grid.lx();
+  const double ky = two_pi * static_cast<double>(periods_y) / grid.ly();
+  for (std::int64_t j = 0; j < grid.ny(); ++j) {
+    const double cy = std::cos(ky * y_of(grid, j));
+    for (std::int64_t i = 0; i < grid.nx(); ++i)
+      heights[i + grid.nx() * j] = amplitude * std::cos(kx * x_of(grid, i)) * cy;
+  }
+}
+
+void double_sinewave_topography(const Grid &grid, double amplitude, double ripple_amplitude,
+                                std::int64_t ripple_periods, double *heights) {
+  require_finite(amplitude, "amplitude");
+  require_finite(ripple_amplitude, "ripple_amplitude");
+  require_at_least(ripple_periods, 1, "ripple_periods");
+  const double k = two_pi / grid.lx();
+  const double kr = k * static_cast<double>(ripple_periods);
+  for (std::int64_t i = 0; i < grid.nx(); ++i) {
+    const double x = x_of(grid, i);
+    const double h = amplitude * std::cos(k * x) + ripple_amplitude * std::cos(kr * x);
+    for (std::int64_t j = 0; j < grid.ny(); ++j) heights[i + grid.nx() * j] = h;
+  }
+}
+
+void self_affine_topography(const Grid &grid, const SelfAffineParameters &p, double *heights) {
+  if (!(std::isfinite(p.hurst) && p.hurst >= 0.0 && p.hurst <= 1.0))
+    throw Error(Status::invalid_argument,
+                "argument 'hurst' must lie in [0, 1], got " + format_number(p.hurst));
+  require_positive(p.long_cutoff, "long_cutoff");
+  require_positive(p.rolloff, "rolloff");
+  require_positive(p.short_cutoff, "short_cutoff");
+  if (p.rolloff > p.long_cutoff)
+    throw Error(Status::invalid_argument, "argument 'rolloff' (" + format_number(p.rolloff) +
+                                              ") must not exceed 'long_cutoff' (" +
+                                              format_number(p.long_cutoff) + ")");
+  if (!(p.short_cutoff < p.rolloff))
+    throw Error(Status::invalid_argument, "argument 'short_cutoff' (" +
+                                              format_number(p.short_cutoff) +
+                                              ") must be below 'rolloff' (" +
+                                              format_number(p.rolloff) + ")");
+  require_positive(p.target, "target");
+
+  // White noise in a fixed order, then filtered by sqrt(C(q)) in Fourier space: the spectrum
+  // is Hermitian by construction, for odd and even sizes alike.
+  const std::int64_t n = grid.n_pixels();
+  Random random(p.seed);
+  Field noise = grid.make_field();
+  for (std::int64_t k = 0; k < n; ++k) noise[static_cast<std::size_t>(k)] = random.gaussian();
+
+  const double q_l = two_pi / p.long_cutoff, q_r = two_pi / p.rolloff;
+  const double q_s = two_pi / p.short_cutoff;
+  const double exponent = -0.5 * (2.0 + 2.0 * p.hurst);  // amplitude ~ sqrt(C)
+  Spectrum s = grid.make_spectrum();
+  grid.fft().forward(noise.data(), s.data());
+  const std::int64_t snx = grid.spectral_nx();
+  bool any_mode = false;
+  for (std::int64_t ky = 0; ky < grid.ny(); ++ky)
+    for (std::int64_t kx = 0; kx < snx; ++kx) {
+      const double qx = grid.qx(kx), qy = grid.qy(ky);
+      const double q = std::sqrt(qx * qx + qy * qy);
+      double amplitude = 0.0;
+      // Small relative slack so that a cutoff placed exactly on a grid wavevector keeps it.
+      if (q > 0.0 && q >= q_l * (1 - 1e-12) && q <= q_s * (1 + 1e-12)) {
+        amplitude = q < q_r ? 1.0 : std::pow(q / q_r, exponent);
+        any_mode = true;
+      }
+      s[static_cast<std::size_t>(kx + snx * ky)] *= amplitude;
+    }
+  if (!any_mode)
+    throw Error(Status::invalid_argument,
+                "arguments 'long_cutoff' and 'short_cutoff': no wavevector of the grid lies "
+                "between 2 pi/long_cutoff and 2 pi/short_cutoff");
+  grid.fft().backward(s.data(), heights);
+
+  const SurfaceStatistics stats = surface_statistics(grid, heights);
+  const double measured =
+      p.norm == RoughnessNorm::rms_height ? stats.rms_height : stats.rms_slope;
+  const double scale = p.target / measured;
+  for (std::int64_t k = 0; k < n; ++k) heights[k] *= scale;
+}
+
+}  // namespace asp
