@@ -1,0 +1,45 @@
+// Small helpers to set up scenes in the internal tests.
+#pragma once
+
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "core/grid.hpp"
+#include "physics/system.hpp"
+#include "solvers/solver.hpp"
+
+namespace asp_test {
+
+constexpr double pi = 3.14159265358979323846;
+
+inline std::unique_ptr<asp::Grid> grid_1d(std::int64_t nx, double lx) {
+  return asp::Grid::create(1, nx, 1, lx, 1.0);
+}
+inline std::unique_ptr<asp::Grid> grid_2d(std::int64_t nx, std::int64_t ny, double lx,
+                                          double ly) {
+  return asp::Grid::create(2, nx, ny, lx, ly);
+}
+
+inline std::vector<double> field_vector(const asp::Field &f) {
+  return std::vector<double>(f.begin(), f.end());
+}
+
+// Runs a PK solve and returns the report.
+inline asp::SolveReport solve_pk(asp::System &system, asp::Control control, double value,
+                                 double tolerance = 1e-10,
+                                 std::int64_t max_iterations = 100000) {
+  auto solver = asp::make_solver("pk");
+  solver->options().tolerance = tolerance;
+  solver->options().max_iterations = max_iterations;
+  solver->solve(system, control, value);
+  return solver->report();
+}
+
+// Distance of x from the origin on a periodic interval of length l, in [0, l/2].
+inline double periodic_distance(double x, double l) {
+  double d = std::fmod(std::fabs(x), l);
+  return d > 0.5 * l ? l - d : d;
+}
+
+}  // namespace asp_test

@@ -1,0 +1,67 @@
+// The FFT engine: round trips on every kind of size and the half-spectrum bookkeeping.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/random.hpp"
+#include "scene.hpp"
+
+namespace {
+
+struct Shape {
+  int dimension;
+  std::int64_t nx, ny;
+};
+
+class FftRoundTrip : public ::testing::TestWithParam<Shape> {};
+
+TEST_P(FftRoundTrip, BackwardOfForwardIsNTimesTheField) {
+  const Shape s = GetParam();
+  auto grid = asp::Grid::create(s.dimension, s.nx, s.ny, 1.0, 2.0);
+  asp::Field f = grid->make_field(), back = grid->make_field();
+  asp::Random random(42);
+  for (auto &v : f) v = random.gaussian();
+  asp::Spectrum spectrum = grid->make_spectrum();
+  grid->fft().forward(f.data(), spectrum.data());
+  grid->fft().backward(spectrum.data(), back.data());
+  const double n = static_cast<double>(grid->n_pixels());
+  for (std::size_t i = 0; i < f.size(); ++i) EXPECT_NEAR(back[i] / n, f[i], 1e-13) << i;
+}
+
+INSTANTIATE_TEST_SUITE_P(Sizes, FftRoundTrip,
+                         ::testing::Values(Shape{1, 1, 1}, Shape{1, 2, 1}, Shape{1, 97, 1},
+                                           Shape{1, 128, 1}, Shape{1, 135, 1},
+                                           Shape{2, 16, 16}, Shape{2, 17, 13},
+                                           Shape{2, 31, 64}, Shape{2, 1, 37},
+                                           Shape{2, 37, 1}, Shape{2, 2, 2}));
+
+TEST(Fft, ParsevalWeightsCountEveryModeOnce) {
+  // sum |f|^2 = (1/N) sum over the full spectrum |F|^2, with the half-spectrum weights.
+  for (auto shape : {Shape{2, 12, 10}, Shape{2, 11, 9}, Shape{1, 10, 1}, Shape{1, 9, 1}}) {
+    auto grid = asp::Grid::create(shape.dimension, shape.nx, shape.ny, 1.0, 1.0);
+    asp::Field f = grid->make_field();
+    asp::Random random(7);
+    double direct = 0.0;
+    for (auto &v : f) {
+      v = random.gaussian();
+      direct += v * v;
+    }
+    asp::Spectrum s = grid->make_spectrum();
+    grid->fft().forward(f.data(), s.data());
+    double spectral = 0.0;
+    for (std::int64_t ky = 0; ky < grid->ny(); ++ky)
+      for (std::int64_t kx = 0; kx < grid->spectral_nx(); ++kx)
+        spectral += grid->hermitian_weight(kx) * std::norm(s[kx + grid->spectral_nx() * ky]);
+    EXPECT_NEAR(spectral / grid->n_pixels(), direct, 1e-10 * direct);
+  }
+}
+
+TEST(Fft, WavevectorsWrapToTheNearestAlias) {
+  auto grid = asp_test::grid_2d(8, 7, 2.0, 3.0);
+  EXPECT_DOUBLE_EQ(grid->qx(4), 2 * asp_test::pi * 4 / 2.0);
+  EXPECT_DOUBLE_EQ(grid->qy(3), 2 * asp_test::pi * 3 / 3.0);
+  EXPECT_DOUBLE_EQ(grid->qy(4), -2 * asp_test::pi * 3 / 3.0);
+  EXPECT_DOUBLE_EQ(grid->qy(6), -2 * asp_test::pi * 1 / 3.0);
+}
+
+}  // namespace

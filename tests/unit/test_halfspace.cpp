@@ -1,0 +1,104 @@
+// The periodic elastic half-space: normalisation against a single Fourier mode, inverse pair,
+// and energy and gradient against finite differences.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/random.hpp"
+#include "physics/periodic_halfspace.hpp"
+#include "scene.hpp"
+
+namespace {
+using asp_test::pi;
+
+// A single mode cos(2 pi (kx x/lx + ky y/ly)) of displacement u0 must give pressure
+// E*|q| u0/2 exactly: checks the 1/N and 2 pi conventions on any grid.
+void expect_single_mode(const asp::Grid &grid, std::int64_t kx, std::int64_t ky) {
+  const double modulus = 3.7, u0 = 0.25;
+  asp::PeriodicHalfSpace substrate(grid, modulus);
+  asp::Field u = grid.make_field(), p = grid.make_field();
+  const double qx = 2 * pi * kx / grid.lx(), qy = 2 * pi * ky / grid.ly();
+  for (std::int64_t j = 0; j < grid.ny(); ++j)
+    for (std::int64_t i = 0; i < grid.nx(); ++i)
+      u[i + grid.nx() * j] =
+          u0 * std::cos(qx * i * grid.lx() / grid.nx() + qy * j * grid.ly() / grid.ny());
+  asp::Spectrum scratch = grid.make_spectrum();
+  substrate.pressure_from_displacement(u.data(), p.data(), scratch.data());
+  const double amplitude = 0.5 * modulus * std::sqrt(qx * qx + qy * qy) * u0;
+  for (std::size_t i = 0; i < u.size(); ++i)
+    ASSERT_NEAR(p[i], amplitude / u0 * u[i], 1e-12 * amplitude) << "pixel " << i;
+}
+
+TEST(PeriodicHalfSpace, SingleModeHasPressureAmplitudeEStarQHOverTwo) {
+  expect_single_mode(*asp_test::grid_1d(64, 1.0), 3, 0);
+  expect_single_mode(*asp_test::grid_1d(97, 2.5), 5, 0);
+  expect_single_mode(*asp_test::grid_2d(32, 24, 1.0, 0.75), 2, 3);
+  expect_single_mode(*asp_test::grid_2d(31, 17, 1.0, 2.0), 4, 1);
+  expect_single_mode(*asp_test::grid_2d(1, 29, 1.0, 2.0), 0, 5);
+}
+
+TEST(PeriodicHalfSpace, ComplianceInvertsStiffness) {
+  auto grid = asp_test::grid_2d(23, 18, 1.3, 0.9);
+  asp::PeriodicHalfSpace substrate(*grid, 2.0);
+  asp::Field p = grid->make_field(), u = grid->make_field(), back = grid->make_field();
+  asp::Random random(3);
+  for (auto &v : p) v = random.gaussian();
+  asp::Spectrum scratch = grid->make_spectrum();
+  substrate.displacement_from_pressure(p.data(), u.data(), scratch.data());
+  substrate.pressure_from_displacement(u.data(), back.data(), scratch.data());
+  for (std::size_t i = 0; i < p.size(); ++i) EXPECT_NEAR(back[i], p[i], 1e-12);
+}
+
+TEST(PeriodicHalfSpace, DefaultK0IsMeanStiffnessOfTheLowestModes) {
+  auto grid = asp_test::grid_2d(16, 8, 2.0, 4.0);
+  asp::PeriodicHalfSpace substrate(*grid, 2.0);
+  EXPECT_DOUBLE_EQ(substrate.k0(), 0.5 * (2 * pi / 2.0 + 2 * pi / 4.0));
+  auto line = asp_test::grid_1d(16, 2.0);
+  EXPECT_DOUBLE_EQ(asp::PeriodicHalfSpace(*line, 2.0).k0(), 2 * pi / 2.0);
+}
+
+// E_el(u) is quadratic, so a central difference is exact up to rounding: the gradient
+// a (K u)_i must match it to ~1e-7 relative (rounding of E divided by the step).
+TEST(PeriodicHalfSpace, EnergyGradientMatchesFiniteDifferences) {
+  std::unique_ptr<asp::Grid> grids[] = {asp_test::grid_2d(12, 9, 1.0, 0.8),
+                                        asp_test::grid_1d(15, 2.0)};
+  for (const auto &grid : grids) {
+    asp::PeriodicHalfSpace substrate(*grid, 1.5);
+    asp::Field u = grid->make_field(), p = grid->make_field();
+    asp::Random random(11);
+    for (auto &v : u) v = random.gaussian();
+    asp::Spectrum scratch = grid->make_spectrum();
+    substrate.pressure_from_displacement(u.data(), p.data(), scratch.data());
+    const double step = 1e-4;
+    for (std::int64_t i = 0; i < grid->n_pixels(); i += 5) {
+      asp::Field plus = u, minus = u;
+      plus[i] += step;
+      minus[i] -= step;
+      const double fd = (substrate.elastic_energy(plus.data(), scratch.data()) -
+                         substrate.elastic_energy(minus.data(), scratch.data())) /
+                        (2 * step);
+      const double gradient = grid->pixel_area() * p[i];
+      EXPECT_NEAR(fd, gradient, 1e-7 * (std::fabs(gradient) + 1.0)) << "pixel " << i;
+    }
+    // And the energy itself: (A/2) sum K|u^|^2 = (a/2) sum p u.
+    double pu = 0.0;
+    for (std::size_t i = 0; i < u.size(); ++i) pu += p[i] * u[i];
+    EXPECT_NEAR(substrate.elastic_energy(u.data(), scratch.data()), 0.5 * grid->pixel_area() * pu,
+                1e-12 * std::fabs(pu));
+  }
+}
+
+TEST(PeriodicHalfSpace, PixelStiffnessIsTheDiagonalOfK) {
+  auto grid = asp_test::grid_2d(10, 7, 1.0, 1.0);
+  asp::PeriodicHalfSpace substrate(*grid, 1.0);
+  asp::Field u = grid->make_field(), p = grid->make_field();
+  u[13] = 1.0;
+  asp::Spectrum scratch = grid->make_spectrum();
+  substrate.pressure_from_displacement(u.data(), p.data(), scratch.data());
+  EXPECT_NEAR(p[13], substrate.pixel_stiffness(), 1e-12 * p[13]);
+  substrate.set_k0(5.0);
+  substrate.pressure_from_displacement(u.data(), p.data(), scratch.data());
+  EXPECT_NEAR(p[13], substrate.pixel_stiffness(), 1e-12 * p[13]);
+}
+
+}  // namespace
