@@ -1,0 +1,326 @@
+! Fortran 2003 interface to asperity, through ISO_C_BINDING.
+!
+! Every C function has an interface of the same name and arguments here: handles are
+! type(c_ptr), counts integer(c_int64_t), reals real(c_double), flags and statuses
+! integer(c_int). Arrays are passed as ordinary Fortran arrays: a field h(nx, ny) is exactly
+! the C layout (x fastest). Strings going in must end in c_null_char ('pk'//c_null_char);
+! asp_string() turns the C strings that come back into Fortran strings.
+module asperity
+  use, intrinsic :: iso_c_binding, only: c_int, c_int64_t, c_double, c_ptr, c_char, &
+                                         c_null_char, c_null_ptr, c_associated, c_f_pointer
+  implicit none
+  private
+
+  ! Status codes
+  integer(c_int), parameter, public :: ASP_OK = 0, ASP_ERR_NULL_POINTER = 1, &
+      ASP_ERR_INVALID_ARGUMENT = 2, ASP_ERR_SIZE_MISMATCH = 3, ASP_ERR_OUT_OF_MEMORY = 4, &
+      ASP_ERR_UNSUPPORTED = 5, ASP_ERR_INVALID_STATE = 6, ASP_ERR_FFT = 7, &
+      ASP_ERR_CALLBACK = 8, ASP_ERR_INTERNAL = 9
+  ! FFT planning
+  integer(c_int), parameter, public :: ASP_FFT_ESTIMATE = 0, ASP_FFT_MEASURE = 1
+  ! Self-affine normalisation
+  integer(c_int), parameter, public :: ASP_RMS_HEIGHT = 1, ASP_RMS_SLOPE = 2
+  ! Scalar results
+  integer(c_int), parameter, public :: ASP_CONTACT_FRACTION = 1, ASP_MEAN_PRESSURE = 2, &
+      ASP_MEAN_GAP = 3, ASP_ELASTIC_ENERGY = 4, ASP_PENETRATION = 5, ASP_TOTAL_FORCE = 6, &
+      ASP_K0 = 7, ASP_REFERENCE_PRESSURE = 8
+  ! Fields
+  integer(c_int), parameter, public :: ASP_FIELD_PRESSURE = 1, ASP_FIELD_GAP = 2, &
+      ASP_FIELD_DISPLACEMENT = 3, ASP_FIELD_TOPOGRAPHY = 4
+  ! Controls
+  integer(c_int), parameter, public :: ASP_CONTROL_MEAN_PRESSURE = 1, &
+      ASP_CONTROL_PENETRATION = 2, ASP_CONTROL_MEAN_GAP = 3
+
+  public :: asp_string
+  public :: asp_status_string, asp_last_error_message, asp_version_string, asp_abi_version
+  public :: asp_grid_create_1d, asp_grid_create_2d, asp_grid_destroy, asp_grid_get_shape, &
+            asp_grid_get_box, asp_grid_set_fft_planning
+  public :: asp_topography_flat, asp_topography_sphere, asp_topography_paraboloid, &
+            asp_topography_sinusoid, asp_topography_double_sinewave, &
+            asp_topography_self_affine, asp_topography_statistics, &
+            asp_topography_power_spectrum
+  public :: asp_system_create, asp_system_destroy, asp_system_set_topography, &
+            asp_system_set_k0, asp_system_set_reference_pressure, asp_system_reset, &
+            asp_system_get, asp_system_get_field
+  public :: asp_solver_create, asp_solver_destroy, asp_solver_set_tolerance, &
+            asp_solver_set_max_iterations, asp_solver_solve, asp_solver_iterations, &
+            asp_solver_final_error, asp_solver_converged, asp_solver_elapsed_seconds
+
+  interface
+    ! ---- errors and version ----
+    function asp_status_string(status) bind(c, name='asp_status_string')
+      import :: c_int, c_ptr
+      integer(c_int), value :: status
+      type(c_ptr) :: asp_status_string
+    end function
+    function asp_last_error_message() bind(c, name='asp_last_error_message')
+      import :: c_ptr
+      type(c_ptr) :: asp_last_error_message
+    end function
+    function asp_version_string() bind(c, name='asp_version_string')
+      import :: c_ptr
+      type(c_ptr) :: asp_version_string
+    end function
+    function asp_abi_version() bind(c, name='asp_abi_version')
+      import :: c_int
+      integer(c_int) :: asp_abi_version
+    end function
+
+    ! ---- grid ----
+    function asp_grid_create_1d(nx, lx, out) bind(c, name='asp_grid_create_1d')
+      import :: c_int, c_int64_t, c_double, c_ptr
+      integer(c_int64_t), value :: nx
+      real(c_double), value :: lx
+      type(c_ptr), intent(out) :: out
+      integer(c_int) :: asp_grid_create_1d
+    end function
+    function asp_grid_create_2d(nx, ny, lx, ly, out) bind(c, name='asp_grid_create_2d')
+      import :: c_int, c_int64_t, c_double, c_ptr
+      integer(c_int64_t), value :: nx, ny
+      real(c_double), value :: lx, ly
+      type(c_ptr), intent(out) :: out
+      integer(c_int) :: asp_grid_create_2d
+    end function
+    subroutine asp_grid_destroy(grid) bind(c, name='asp_grid_destroy')
+      import :: c_ptr
+      type(c_ptr), value :: grid
+    end subroutine
+    function asp_grid_get_shape(grid, dimension, nx, ny, n_pixels) &
+        bind(c, name='asp_grid_get_shape')
+      import :: c_int, c_int64_t, c_ptr
+      type(c_ptr), value :: grid
+      integer(c_int), intent(out) :: dimension
+      integer(c_int64_t), intent(out) :: nx, ny, n_pixels
+      integer(c_int) :: asp_grid_get_shape
+    end function
+    function asp_grid_get_box(grid, lx, ly) bind(c, name='asp_grid_get_box')
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: grid
+      real(c_double), intent(out) :: lx, ly
+      integer(c_int) :: asp_grid_get_box
+    end function
+    function asp_grid_set_fft_planning(grid, planning) bind(c, name='asp_grid_set_fft_planning')
+      import :: c_int, c_ptr
+      type(c_ptr), value :: grid
+      integer(c_int), value :: planning
+      integer(c_int) :: asp_grid_set_fft_planning
+    end function
+
+    ! ---- topographies ----
+    function asp_topography_flat(grid, heights, n) bind(c, name='asp_topography_flat')
+      import :: c_int, c_int64_t, c_double, c_ptr
+      type(c_ptr), value :: grid
+      real(c_double), intent(out) :: heights(*)
+      integer(c_int64_t), value :: n
+      integer(c_int) :: asp_topography_flat
+    end function
+    function asp_topography_sphere(grid, radius, heights, n) &
+        bind(c, name='asp_topography_sphere')
+      import :: c_int, c_int64_t, c_double, c_ptr
+      type(c_ptr), value :: grid
+      real(c_double), value :: radius
+      real(c_double), intent(out) :: heights(*)
+      integer(c_int64_t), value :: n
+      integer(c_int) :: asp_topography_sphere
+    end function
+    function asp_topography_paraboloid(grid, radius, heights, n) &
+        bind(c, name='asp_topography_paraboloid')
+      import :: c_int, c_int64_t, c_double, c_ptr
+      type(c_ptr), value :: grid
+      real(c_double), value :: radius
+      real(c_double), intent(out) :: heights(*)
+      integer(c_int64_t), value :: n
+      integer(c_int) :: asp_topography_paraboloid
+    end function
+    function asp_topography_sinusoid(grid, amplitude, periods_x, periods_y, heights, n) &
+        bind(c, name='asp_topography_sinusoid')
+      import :: c_int, c_int64_t, c_double, c_ptr
+      type(c_ptr), value :: grid
+      real(c_double), value :: amplitude
+      integer(c_int64_t), value :: periods_x, periods_y
+      real(c_double), intent(out) :: heights(*)
+      integer(c_int64_t), value :: n
+      integer(c_int) :: asp_topography_sinusoid
+    end function
+    function asp_topography_double_sinewave(grid, amplitude, ripple_amplitude, ripple_periods, &
+        heights, n) bind(c, name='asp_topography_double_sinewave')
+      import :: c_int, c_int64_t, c_double, c_ptr
+      type(c_ptr), value :: grid
+      real(c_double), value :: amplitude, ripple_amplitude
+      integer(c_int64_t), value :: ripple_periods
+      real(c_double), intent(out) :: heights(*)
+      integer(c_int64_t), value :: n
+      integer(c_int) :: asp_topography_double_sinewave
+    end function
+    function asp_topography_self_affine(grid, hurst, long_cutoff, rolloff, short_cutoff, &
+        normalise, target, seed, heights, n) bind(c, name='asp_topography_self_affine')
+      import :: c_int, c_int64_t, c_double, c_ptr
+      type(c_ptr), value :: grid
+      real(c_double), value :: hurst, long_cutoff, rolloff, short_cutoff
+      integer(c_int), value :: normalise
+      real(c_double), value :: target
+      integer(c_int64_t), value :: seed
+      real(c_double), intent(out) :: heights(*)
+      integer(c_int64_t), value :: n
+      integer(c_int) :: asp_topography_self_affine
+    end function
+    function asp_topography_statistics(grid, heights, n, rms_height, rms_slope, rms_curvature) &
+        bind(c, name='asp_topography_statistics')
+      import :: c_int, c_int64_t, c_double, c_ptr
+      type(c_ptr), value :: grid
+      real(c_double), intent(in) :: heights(*)
+      integer(c_int64_t), value :: n
+      real(c_double), intent(out) :: rms_height, rms_slope, rms_curvature
+      integer(c_int) :: asp_topography_statistics
+    end function
+    function asp_topography_power_spectrum(grid, heights, n, n_bins, q, c) &
+        bind(c, name='asp_topography_power_spectrum')
+      import :: c_int, c_int64_t, c_double, c_ptr
+      type(c_ptr), value :: grid
+      real(c_double), intent(in) :: heights(*)
+      integer(c_int64_t), value :: n, n_bins
+      real(c_double), intent(out) :: q(*), c(*)
+      integer(c_int) :: asp_topography_power_spectrum
+    end function
+
+    ! ---- system ----
+    function asp_system_create(grid, contact_modulus, out) bind(c, name='asp_system_create')
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: grid
+      real(c_double), value :: contact_modulus
+      type(c_ptr), intent(out) :: out
+      integer(c_int) :: asp_system_create
+    end function
+    subroutine asp_system_destroy(system) bind(c, name='asp_system_destroy')
+      import :: c_ptr
+      type(c_ptr), value :: system
+    end subroutine
+    function asp_system_set_topography(system, heights, n) &
+        bind(c, name='asp_system_set_topography')
+      import :: c_int, c_int64_t, c_double, c_ptr
+      type(c_ptr), value :: system
+      real(c_double), intent(in) :: heights(*)
+      integer(c_int64_t), value :: n
+      integer(c_int) :: asp_system_set_topography
+    end function
+    function asp_system_set_k0(system, k0) bind(c, name='asp_system_set_k0')
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: system
+      real(c_double), value :: k0
+      integer(c_int) :: asp_system_set_k0
+    end function
+    function asp_system_set_reference_pressure(system, reference_pressure) &
+        bind(c, name='asp_system_set_reference_pressure')
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: system
+      real(c_double), value :: reference_pressure
+      integer(c_int) :: asp_system_set_reference_pressure
+    end function
+    function asp_system_reset(system) bind(c, name='asp_system_reset')
+      import :: c_int, c_ptr
+      type(c_ptr), value :: system
+      integer(c_int) :: asp_system_reset
+    end function
+    function asp_system_get(system, key, value) bind(c, name='asp_system_get')
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: system
+      integer(c_int), value :: key
+      real(c_double), intent(out) :: value
+      integer(c_int) :: asp_system_get
+    end function
+    function asp_system_get_field(system, field, values, n) bind(c, name='asp_system_get_field')
+      import :: c_int, c_int64_t, c_double, c_ptr
+      type(c_ptr), value :: system
+      integer(c_int), value :: field
+      real(c_double), intent(out) :: values(*)
+      integer(c_int64_t), value :: n
+      integer(c_int) :: asp_system_get_field
+    end function
+
+    ! ---- solver ----
+    function asp_solver_create(algorithm, out) bind(c, name='asp_solver_create')
+      import :: c_int, c_char, c_ptr
+      character(kind=c_char), intent(in) :: algorithm(*)
+      type(c_ptr), intent(out) :: out
+      integer(c_int) :: asp_solver_create
+    end function
+    subroutine asp_solver_destroy(solver) bind(c, name='asp_solver_destroy')
+      import :: c_ptr
+      type(c_ptr), value :: solver
+    end subroutine
+    function asp_solver_set_tolerance(solver, tolerance) bind(c, name='asp_solver_set_tolerance')
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: solver
+      real(c_double), value :: tolerance
+      integer(c_int) :: asp_solver_set_tolerance
+    end function
+    function asp_solver_set_max_iterations(solver, max_iterations) &
+        bind(c, name='asp_solver_set_max_iterations')
+      import :: c_int, c_int64_t, c_ptr
+      type(c_ptr), value :: solver
+      integer(c_int64_t), value :: max_iterations
+      integer(c_int) :: asp_solver_set_max_iterations
+    end function
+    function asp_solver_solve(solver, system, control, value) bind(c, name='asp_solver_solve')
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: solver, system
+      integer(c_int), value :: control
+      real(c_double), value :: value
+      integer(c_int) :: asp_solver_solve
+    end function
+    function asp_solver_iterations(solver, iterations) bind(c, name='asp_solver_iterations')
+      import :: c_int, c_int64_t, c_ptr
+      type(c_ptr), value :: solver
+      integer(c_int64_t), intent(out) :: iterations
+      integer(c_int) :: asp_solver_iterations
+    end function
+    function asp_solver_final_error(solver, error) bind(c, name='asp_solver_final_error')
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: solver
+      real(c_double), intent(out) :: error
+      integer(c_int) :: asp_solver_final_error
+    end function
+    function asp_solver_converged(solver, converged) bind(c, name='asp_solver_converged')
+      import :: c_int, c_ptr
+      type(c_ptr), value :: solver
+      integer(c_int), intent(out) :: converged
+      integer(c_int) :: asp_solver_converged
+    end function
+    function asp_solver_elapsed_seconds(solver, seconds) &
+        bind(c, name='asp_solver_elapsed_seconds')
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: solver
+      real(c_double), intent(out) :: seconds
+      integer(c_int) :: asp_solver_elapsed_seconds
+    end function
+  end interface
+
+  interface
+    function c_strlen(s) bind(c, name='strlen')
+      import :: c_ptr, c_int64_t
+      type(c_ptr), value :: s
+      integer(c_int64_t) :: c_strlen
+    end function
+  end interface
+
+contains
+
+  ! A Fortran copy of a NUL-terminated C string (empty for a NULL pointer).
+  function asp_string(s) result(text)
+    type(c_ptr), intent(in) :: s
+    character(len=:), allocatable :: text
+    character(kind=c_char), pointer :: chars(:)
+    integer :: i, length
+    if (.not. c_associated(s)) then
+      text = ''
+      return
+    end if
+    length = int(c_strlen(s))
+    call c_f_pointer(s, chars, [length])
+    allocate (character(len=length) :: text)
+    do i = 1, length
+      text(i:i) = chars(i)
+    end do
+  end function
+
+end module asperity

@@ -1,0 +1,59 @@
+! The C example's scene from Fortran: a self-affine rough surface pressed onto an elastic
+! half-space, solved with Polonsky & Keer's method.
+program rough_contact
+  use, intrinsic :: iso_c_binding, only: c_int, c_int64_t, c_double, c_ptr, c_null_char
+  use asperity
+  implicit none
+
+  integer(c_int64_t), parameter :: n = 128
+  real(c_double), parameter :: length = 1.0d0, modulus = 1.0d0, rms_slope = 0.1d0
+  real(c_double), parameter :: mean_pressure = 0.002d0
+  type(c_ptr) :: grid, system, solver
+  real(c_double), allocatable :: heights(:, :), pressure(:, :)
+  real(c_double) :: fraction, penetration, error
+  integer(c_int64_t) :: iterations
+  integer(c_int) :: converged
+
+  allocate (heights(n, n), pressure(n, n))   ! h(i, j): x fastest, as asperity stores it
+  call check(asp_grid_create_2d(n, n, length, length, grid))
+  call check(asp_topography_self_affine(grid, 0.8d0, length, length / 4, 4 * length / n, &
+                                        ASP_RMS_SLOPE, rms_slope, 42_c_int64_t, heights, n * n))
+  call check(asp_system_create(grid, modulus, system))
+  call check(asp_system_set_topography(system, heights, n * n))
+  call check(asp_solver_create('pk'//c_null_char, solver))
+  call check(asp_solver_solve(solver, system, ASP_CONTROL_MEAN_PRESSURE, mean_pressure))
+
+  call check(asp_system_get(system, ASP_CONTACT_FRACTION, fraction))
+  call check(asp_system_get(system, ASP_PENETRATION, penetration))
+  call check(asp_system_get_field(system, ASP_FIELD_PRESSURE, pressure, n * n))
+  call check(asp_solver_iterations(solver, iterations))
+  call check(asp_solver_final_error(solver, error))
+  call check(asp_solver_converged(solver, converged))
+
+  print '(a, a)', 'asperity ', asp_string(asp_version_string())
+  print '(a, f8.5, a, es10.3)', 'contact fraction ', fraction, ' at mean pressure ', mean_pressure
+  print '(a, es12.5, a, i0, a, es9.2)', 'penetration ', penetration, ', iterations ', &
+      iterations, ', error ', error
+  print '(a, es12.5)', 'mean of the pressure field ', sum(pressure) / (n * n)
+
+  ! A bad argument is reported, not fatal: the status and the message say what was wrong.
+  if (asp_system_set_k0(system, -1.0d0) /= ASP_ERR_INVALID_ARGUMENT) stop 2
+  print '(a, a)', 'expected error: ', asp_string(asp_last_error_message())
+
+  call asp_solver_destroy(solver)
+  call asp_system_destroy(system)
+  call asp_grid_destroy(grid)
+  if (converged /= 1) stop 1
+  if (abs(sum(pressure) / (n * n) - mean_pressure) > 1d-12 * mean_pressure) stop 3
+
+contains
+
+  subroutine check(status)
+    integer(c_int), intent(in) :: status
+    if (status /= ASP_OK) then
+      print '(a, a)', 'asperity error: ', asp_string(asp_last_error_message())
+      stop 1
+    end if
+  end subroutine
+
+end program rough_contact
