@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "core/random.hpp"
 #include "scene.hpp"
@@ -33,7 +34,12 @@ INSTANTIATE_TEST_SUITE_P(Sizes, FftRoundTrip,
                                            Shape{1, 128, 1}, Shape{1, 135, 1},
                                            Shape{2, 16, 16}, Shape{2, 17, 13},
                                            Shape{2, 31, 64}, Shape{2, 1, 37},
-                                           Shape{2, 37, 1}, Shape{2, 2, 2}));
+                                           Shape{2, 37, 1}, Shape{2, 2, 2}),
+                         [](const ::testing::TestParamInfo<Shape> &info) {
+                           return std::to_string(info.param.dimension) + "d_" +
+                                  std::to_string(info.param.nx) + "x" +
+                                  std::to_string(info.param.ny);
+                         });
 
 TEST(Fft, ParsevalWeightsCountEveryModeOnce) {
   // sum |f|^2 = (1/N) sum over the full spectrum |F|^2, with the half-spectrum weights.

@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "core/error.hpp"
@@ -213,7 +215,13 @@ INSTANTIATE_TEST_SUITE_P(
                       Extreme{"prime sizes", 2, 67, 71, 1.0, 0.1, 0.01},
                       Extreme{"1 x N strip", 2, 1, 257, 1.0, 0.1, 0.05},
                       Extreme{"N x 1 strip", 2, 257, 1, 1.0, 0.1, 0.05},
-                      Extreme{"odd 1D", 1, 999, 1, 1.0, 0.1, 0.05}));
+                      Extreme{"odd 1D", 1, 999, 1, 1.0, 0.1, 0.05}),
+    [](const ::testing::TestParamInfo<Extreme> &info) {
+      std::string name = info.param.name;
+      for (char &c : name)
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+      return name;
+    });
 
 TEST(PolonskyKeer, ModulusOnlyScalesThePressure) {
   // Same surface, E* 1e-6 and 1e6, mean pressures scaled alike: identical contact.

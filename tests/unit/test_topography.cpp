@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "core/error.hpp"
@@ -100,7 +101,11 @@ TEST_P(SelfAffine, HitsTheRequestedValueAndHasThePowerLaw) {
 INSTANTIATE_TEST_SUITE_P(Sizes, SelfAffine,
                          ::testing::Values(RoughCase{256, 256, asp::RoughnessNorm::rms_slope},
                                            RoughCase{251, 251, asp::RoughnessNorm::rms_height},
-                                           RoughCase{255, 128, asp::RoughnessNorm::rms_slope}));
+                                           RoughCase{255, 128, asp::RoughnessNorm::rms_slope}),
+                         [](const ::testing::TestParamInfo<RoughCase> &info) {
+                           return std::to_string(info.param.nx) + "x" +
+                                  std::to_string(info.param.ny);
+                         });
 
 TEST(SelfAffineSurface, SameSeedSameSurfaceOtherSeedOtherSurface) {
   auto grid = asp_test::grid_2d(37, 41, 1.0, 1.0);

@@ -1,0 +1,97 @@
+// Benchmark of the Polonsky-Keer solver on 2D periodic rough scenes (not a test).
+//
+// For each grid it prints the time of one r2c + c2r FFT pair on that grid, PK's time per
+// iteration, their ratio, the iterations to the tolerance, and the field memory per pixel.
+//
+// usage: asperity_pk_benchmark [--measure] [N ...]   (default sizes 512 1024 2048)
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <vector>
+
+#include "core/aligned_field.hpp"
+#include "core/grid.hpp"
+#include "physics/system.hpp"
+#include "physics/topography.hpp"
+#include "solvers/solver.hpp"
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Best of several timed batches of FFT pairs: the floor the solver's iterations compare with.
+double fft_pair_seconds(const asp::Grid &grid) {
+  asp::Field f = grid.make_field();
+  for (std::size_t i = 0; i < f.size(); ++i) f[i] = static_cast<double>(i % 7);
+  asp::Spectrum s = grid.make_spectrum();
+  const int repeats = std::max(3, static_cast<int>(2e7 / grid.n_pixels()));
+  double best = 1e300;
+  for (int batch = 0; batch < 5; ++batch) {
+    const auto start = std::chrono::steady_clock::now();
+    for (int k = 0; k < repeats; ++k) {
+      grid.fft().forward(f.data(), s.data());
+      grid.fft().backward(s.data(), f.data());
+    }
+    best = std::min(best, seconds_since(start) / repeats);
+  }
+  return best;
+}
+
+}  // namespace
+
+int main(int argc, char **argv) {
+  bool measure = false;
+  std::vector<long> sizes;
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--measure") == 0)
+      measure = true;
+    else
+      sizes.push_back(std::atol(argv[i]));
+  }
+  if (sizes.empty()) sizes = {512, 1024, 2048};
+
+  const double tolerance = 1e-8, modulus = 1.0, slope = 0.1, mean_pressure = 0.002;
+  std::printf("Polonsky-Keer, periodic self-affine surface (H 0.8, roll-off L/4, short cutoff "
+              "8 px, rms slope %.2g), E* %.1f, mean pressure %.3g, tolerance %.0e, FFTW %s\n",
+              slope, modulus, mean_pressure, tolerance, measure ? "MEASURE" : "ESTIMATE");
+  std::printf("%6s %12s %12s %7s %6s %9s %9s %8s\n", "N", "FFT pair ms", "PK iter ms", "ratio",
+              "iters", "solve s", "contact", "B/pixel");
+  for (long n : sizes) {
+    auto grid = asp::Grid::create(2, n, n, 1.0, 1.0);
+    grid->set_fft_planning(measure ? asp::FftPlanning::measure : asp::FftPlanning::estimate);
+    const double fft = fft_pair_seconds(*grid);
+
+    asp::SelfAffineParameters params;
+    params.hurst = 0.8;
+    params.long_cutoff = 1.0;
+    params.rolloff = 0.25;
+    params.short_cutoff = 8.0 / n;
+    params.norm = asp::RoughnessNorm::rms_slope;
+    params.target = slope;
+    params.seed = 1;
+    std::vector<double> heights(static_cast<std::size_t>(grid->n_pixels()));
+    asp::self_affine_topography(*grid, params, heights.data());
+
+    const std::int64_t before = asp::field_bytes_in_use();
+    asp::reset_field_bytes_peak();
+    asp::System system(*grid, modulus);
+    system.set_topography(heights.data());
+    auto solver = asp::make_solver("pk");
+    solver->options().tolerance = tolerance;
+    solver->solve(system, asp::Control::mean_pressure, mean_pressure);
+    const asp::SolveReport &r = solver->report();
+    const double bytes_per_pixel =
+        static_cast<double>(asp::field_bytes_peak() - before) / grid->n_pixels();
+    const double per_iteration = r.seconds / std::max<std::int64_t>(r.iterations, 1);
+    std::printf("%6ld %12.3f %12.3f %7.2f %6lld %9.2f %9.4f %8.1f%s\n", n, 1e3 * fft,
+                1e3 * per_iteration, per_iteration / fft, static_cast<long long>(r.iterations),
+                r.seconds, system.contact_fraction(), bytes_per_pixel,
+                r.converged ? "" : "  (not converged)");
+    std::fflush(stdout);
+  }
+  return 0;
+}
