@@ -82,8 +82,13 @@ int main(int argc, char **argv) {
     system.set_topography(heights.data());
     auto solver = asp::make_solver("pk");
     solver->options().tolerance = tolerance;
-    solver->solve(system, asp::Control::mean_pressure, mean_pressure);
-    const asp::SolveReport &r = solver->report();
+    // Best of three cold solves: the machine's noise only ever adds time.
+    asp::SolveReport r;
+    for (int run = 0; run < 3; ++run) {
+      system.reset_state();
+      solver->solve(system, asp::Control::mean_pressure, mean_pressure);
+      if (run == 0 || solver->report().seconds < r.seconds) r = solver->report();
+    }
     const double bytes_per_pixel =
         static_cast<double>(asp::field_bytes_peak() - before) / grid->n_pixels();
     const double per_iteration = r.seconds / std::max<std::int64_t>(r.iterations, 1);

@@ -30,7 +30,10 @@ class System {
   double max_height() const { return max_height_; }
 
   // 0 selects the default; see asp_system_set_reference_pressure.
-  void set_reference_pressure(double p) { reference_pressure_override_ = p; }
+  void set_reference_pressure(double p) {
+    reference_pressure_override_ = p;
+    last_reference_pressure_ = reference_pressure(0.0);
+  }
   // The reference pressure for a solve whose own natural scale is `control_scale`
   // (|mean pressure| or K~(0)|penetration|), used only when the surface has no slope.
   double reference_pressure(double control_scale) const;

@@ -151,6 +151,7 @@ void PolonskyKeer::run(System &system, Control control, double value, SolveRepor
     const double t_mean = load_control && n_contact > 0.0 ? sum_t_on_contact / n_contact : 0.0;
 
     // Projected gradient (the error) and the new search direction.
+    // (Branch-free on purpose: selects and maxima written so that the loop vectorises.)
     double violation = 0.0, sum_gt = 0.0;
 #pragma omp simd reduction(max : violation) reduction(+ : sum_gt)
     for (std::int64_t i = 0; i < n; ++i) {
@@ -158,7 +159,8 @@ void PolonskyKeer::run(System &system, Control control, double value, SolveRepor
       const bool in = p[i] > 0.0;
       const double ti = in ? gi + beta * (t[i] - t_mean) : 0.0;
       t[i] = ti;
-      violation = std::max(violation, in ? std::fabs(gi) : -gi);
+      const double v = in ? std::fabs(gi) : -gi;
+      violation = violation > v ? violation : v;
       sum_gt += gi * ti;
     }
     reduce.combine_maxima(&violation, 1);
@@ -195,9 +197,11 @@ void PolonskyKeer::run(System &system, Control control, double value, SolveRepor
 #pragma omp simd reduction(+ : sum_p, entered, sum_t)
     for (std::int64_t i = 0; i < n; ++i) {
       const double gi = g[i] - shift;
-      double pi = scale * p[i];
-      pi = pi > 0.0 ? std::max(pi - tau * t[i], 0.0) : 0.0;
-      const bool enters = pi == 0.0 && gi < 0.0;
+      const double old_p = scale * p[i];
+      const double stepped = old_p - tau * t[i];
+      double pi = old_p > 0.0 ? stepped : 0.0;
+      pi = pi > 0.0 ? pi : 0.0;
+      const bool enters = (pi == 0.0) & (gi < 0.0);
       pi = enters ? -tau * gi : pi;
       entered += enters ? 1.0 : 0.0;
       sum_t += pi > 0.0 ? t[i] : 0.0;

@@ -19,6 +19,15 @@ export PKG_CONFIG_PATH=$(dirname "$pc_file")
   -o "$work/rough_contact_pkgconfig"
 "$work/rough_contact_pkgconfig"
 
+echo "== the README's C example with pkg-config"
+# The first ```c block of the README, compiled and run as it stands.
+awk '/^```c$/ {inside = 1; next} /^```$/ && inside {exit} inside' "$source/README.md" \
+  > "$work/readme_example.c"
+[ -s "$work/readme_example.c" ] || { echo "no C example found in README.md"; exit 1; }
+"$cc" -std=c99 -pedantic -Wall -Werror -Wstrict-prototypes "$work/readme_example.c" \
+  $(pkg-config --cflags --libs asperity) -o "$work/readme_example"
+"$work/readme_example"
+
 echo "== C example with find_package(asperity)"
 cmake -S "$source/tests/install/consumer" -B "$work/consumer" \
   -DCMAKE_PREFIX_PATH="$prefix" -DEXAMPLE_SOURCE="$source/examples/c/rough_contact.c" \
