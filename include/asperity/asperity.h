@@ -171,7 +171,7 @@ ASP_EXPORT int asp_topography_self_affine(const asp_grid *grid, double hurst, do
 /* Statistics of a topography (thesis eqs. 52-54), computed spectrally:
  *   rms_height^2    = <(h - mean h)^2>,
  *   rms_slope^2     = <|grad h|^2>,
- *   rms_curvature^2 = <|laplacian h|^2>/4.
+ *   rms_curvature^2 = <|laplacian h|^2>/4 in 2D, <h''^2> in 1D.
  * Any output pointer may be NULL. */
 ASP_EXPORT int asp_topography_statistics(const asp_grid *grid, const double *heights, int64_t n,
                                          double *rms_height, double *rms_slope,
@@ -204,8 +204,10 @@ ASP_EXPORT int asp_system_set_topography(asp_system *system, const double *heigh
 ASP_EXPORT int asp_system_set_k0(asp_system *system, double k0);
 
 /* The reference pressure that solver errors are divided by (see asp_solver_solve). Default 0:
- * use E* h'_rms/2, the rms pressure of full contact, or E* pi/lx * max|h| for a surface with
- * no slope (the flat). A value > 0 overrides it. */
+ * use E* h'_rms/2, the rms pressure of full contact, the scale of local contact pressures at
+ * any load. For a surface without slope (the flat) a solve uses its own scale instead: the
+ * mean pressure, or K~(0) times the penetration (E* if that is zero too). A value > 0
+ * overrides all this. */
 ASP_EXPORT int asp_system_set_reference_pressure(asp_system *system, double reference_pressure);
 
 /* Forgets the state (zero pressure), so the next solve starts cold. */
