@@ -26,11 +26,4 @@ double Reductions::max(const double *f, std::int64_t n) const {
   return m;
 }
 
-double Reductions::max_abs(const double *f, std::int64_t n) const {
-  double m = 0.0;
-  for (std::int64_t i = 0; i < n; ++i) m = std::fabs(f[i]) > m ? std::fabs(f[i]) : m;
-  combine_maxima(&m, 1);
-  return m;
-}
-
 }  // namespace asp

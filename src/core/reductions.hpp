@@ -18,7 +18,6 @@ class Reductions {
   double sum(const double *f, std::int64_t n) const;
   double dot(const double *a, const double *b, std::int64_t n) const;
   double max(const double *f, std::int64_t n) const;
-  double max_abs(const double *f, std::int64_t n) const;
 };
 
 // The whole grid lives in this process.
