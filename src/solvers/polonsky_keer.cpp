@@ -98,9 +98,9 @@ void PolonskyKeer::run(System &system, Control control, double value, SolveRepor
   double shift = 0.0;
 
   // Starting point. Load control: the stored pressure rescaled to the target mean, or a
-  // uniform pressure. Penetration control: the stored pressure, or, from rest, each
-  // interpenetrating pixel pushed back by its own stiffness. Zero load: the body just touches
-  // the highest point, so the penetration starts (and ends) at 0.
+  // uniform pressure. Penetration control: the stored pressure; from rest (no pressure) the
+  // first iteration finds no contact and restarts from the interpenetration, below. Zero load:
+  // the body just touches the highest point, so the penetration starts (and ends) at 0.
   double delta = load_control ? (value == 0.0 ? 0.0 : state.penetration) : value;
   {
     double sum_p = 0.0;
@@ -115,8 +115,6 @@ void PolonskyKeer::run(System &system, Control control, double value, SolveRepor
       } else {
         scale = value * n_total / sum_p;
       }
-    } else if (sum_p <= 0.0) {
-      for (std::int64_t i = 0; i < n; ++i) p[i] = k_pixel * std::max(h[i] - h_max + delta, 0.0);
     }
   }
 
@@ -179,8 +177,8 @@ void PolonskyKeer::run(System &system, Control control, double value, SolveRepor
     g_norm_old = g_norm;
 
     if (n_contact == 0.0) {
-      // Nothing carries load (penetration control from a state with no contact): restart
-      // from each interpenetrating pixel pushed back by its own stiffness.
+      // Nothing carries load (penetration control from rest, or a state without contact):
+      // start from each interpenetrating pixel pushed back by its own stiffness.
       for (std::int64_t i = 0; i < n; ++i) p[i] = k_pixel * std::max(-(g[i] - shift), 0.0);
       scale = 1.0;
       conjugate = false;

@@ -7,6 +7,7 @@
 
 #include "core/grid.hpp"
 #include "physics/system.hpp"
+#include "physics/topography.hpp"
 #include "solvers/solver.hpp"
 
 namespace asp_test {
@@ -23,6 +24,24 @@ inline std::unique_ptr<asp::Grid> grid_2d(std::int64_t nx, std::int64_t ny, doub
 
 inline std::vector<double> field_vector(const asp::Field &f) {
   return std::vector<double>(f.begin(), f.end());
+}
+
+// A self-affine surface (Hurst 0.8, no roughness longer than the box) with the given rms
+// slope, roll-off wavelength (as a fraction of lx) and short cutoff (in pixels).
+inline std::vector<double> rough_surface(const asp::Grid &grid, std::uint64_t seed,
+                                         double slope = 0.1, double rolloff_fraction = 0.25,
+                                         double short_cutoff_pixels = 4.0) {
+  asp::SelfAffineParameters p;
+  p.hurst = 0.8;
+  p.long_cutoff = grid.lx();
+  p.rolloff = rolloff_fraction * grid.lx();
+  p.short_cutoff = short_cutoff_pixels * grid.lx() / grid.nx();
+  p.norm = asp::RoughnessNorm::rms_slope;
+  p.target = slope;
+  p.seed = seed;
+  std::vector<double> h(static_cast<std::size_t>(grid.n_pixels()));
+  asp::self_affine_topography(grid, p, h.data());
+  return h;
 }
 
 // Runs a PK solve and returns the report.

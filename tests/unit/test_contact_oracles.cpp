@@ -138,16 +138,9 @@ TEST(RoughContact, ContactFractionIsLinearInLoadWithKappaNearTwo) {
   double kappa_sum = 0.0;
   const int seeds = 4;
   for (int seed = 1; seed <= seeds; ++seed) {
-    asp::SelfAffineParameters params;
-    params.hurst = 0.8;
-    params.long_cutoff = 1.0;
-    params.rolloff = 0.5;
-    params.short_cutoff = 8.0 / n;
-    params.norm = asp::RoughnessNorm::rms_slope;
-    params.target = slope;
-    params.seed = static_cast<std::uint64_t>(seed);
-    std::vector<double> h(static_cast<std::size_t>(n * n));
-    asp::self_affine_topography(*grid, params, h.data());
+    // Roll-off at half the box, short cutoff at 8 pixels.
+    const auto h =
+        asp_test::rough_surface(*grid, static_cast<std::uint64_t>(seed), slope, 0.5, 8.0);
     asp::System system(*grid, modulus);
     system.set_topography(h.data());
     const double mean = 0.01 * modulus * slope;

@@ -14,19 +14,7 @@
 
 namespace {
 
-std::vector<double> rough_surface(const asp::Grid &grid, std::uint64_t seed, double slope = 0.1) {
-  asp::SelfAffineParameters p;
-  p.hurst = 0.8;
-  p.long_cutoff = grid.lx();
-  p.rolloff = grid.lx() / 4;
-  p.short_cutoff = 4 * grid.lx() / grid.nx();
-  p.norm = asp::RoughnessNorm::rms_slope;
-  p.target = slope;
-  p.seed = seed;
-  std::vector<double> h(static_cast<std::size_t>(grid.n_pixels()));
-  asp::self_affine_topography(grid, p, h.data());
-  return h;
-}
+using asp_test::rough_surface;
 
 // The state is consistent: its displacement (from the gap) is the one its pressure produces.
 void expect_consistent_state(const asp::System &system) {
@@ -88,12 +76,13 @@ TEST(PolonskyKeer, LoadAndPenetrationControlAgree) {
   EXPECT_GT(delta, 0.0);
   ASSERT_TRUE(
       asp_test::solve_pk(by_penetration, asp::Control::penetration, delta, 1e-12).converged);
-  // Both solve the same problem to ~1e-12 relative in the gap: the mean pressure follows to
-  // about that times K0-weighted sums, far below 1e-8.
-  EXPECT_NEAR(by_penetration.mean_pressure(), 0.02, 1e-8);
+  // Both stop at error 1e-12, i.e. a gap residual worth 1e-12 p_ref = 1e-13 of pressure per
+  // pixel (p_ref = E* h'_rms/2 = 0.1). Allowing a factor 100 for how the contact operator
+  // spreads residuals gives 1e-11 pointwise (measured 6e-14) and 1e-12 on the mean (3e-16).
+  EXPECT_NEAR(by_penetration.mean_pressure(), 0.02, 1e-12);
   EXPECT_DOUBLE_EQ(by_penetration.contact_fraction(), by_load.contact_fraction());
   for (std::size_t i = 0; i < h.size(); ++i)
-    EXPECT_NEAR(by_penetration.state().pressure[i], by_load.state().pressure[i], 1e-8) << i;
+    EXPECT_NEAR(by_penetration.state().pressure[i], by_load.state().pressure[i], 1e-11) << i;
 }
 
 TEST(PolonskyKeer, K0MovesPenetrationNotPressureUnderLoadControl) {
@@ -187,10 +176,7 @@ TEST_P(ExtremeScenes, ConvergeWithoutNaN) {
   std::vector<double> h(static_cast<std::size_t>(grid->n_pixels()));
   if (e.nx == 1) {
     // A strip along y: heights vary along y only.
-    auto column = asp_test::grid_1d(e.ny, 1.0);
-    asp::SelfAffineParameters p;
-    p.long_cutoff = 1.0, p.rolloff = 0.25, p.short_cutoff = 4.0 / e.ny, p.target = e.slope;
-    asp::self_affine_topography(*column, p, h.data());
+    h = rough_surface(*asp_test::grid_1d(e.ny, 1.0), 11, e.slope);
   } else {
     h = rough_surface(*grid, 11, e.slope);
   }

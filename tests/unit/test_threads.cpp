@@ -5,20 +5,12 @@
 #include <thread>
 #include <vector>
 
-#include "physics/topography.hpp"
 #include "scene.hpp"
 
 namespace {
 
 std::vector<double> solve_on(const asp::Grid &grid, std::uint64_t seed) {
-  asp::SelfAffineParameters p;
-  p.long_cutoff = 1.0;
-  p.rolloff = 0.25;
-  p.short_cutoff = 4.0 / grid.nx();
-  p.target = 0.1;
-  p.seed = seed;
-  std::vector<double> h(static_cast<std::size_t>(grid.n_pixels()));
-  asp::self_affine_topography(grid, p, h.data());
+  const std::vector<double> h = asp_test::rough_surface(grid, seed);
   asp::System system(grid, 1.0);
   system.set_topography(h.data());
   asp_test::solve_pk(system, asp::Control::mean_pressure, 0.005, 1e-10);
