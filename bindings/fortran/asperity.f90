@@ -17,19 +17,19 @@ module asperity
       ASP_ERR_UNSUPPORTED = 5, ASP_ERR_INVALID_STATE = 6, ASP_ERR_FFT = 7, &
       ASP_ERR_CALLBACK = 8, ASP_ERR_INTERNAL = 9
   ! FFT planning
-  integer(c_int), parameter, public :: ASP_FFT_ESTIMATE = 0, ASP_FFT_MEASURE = 1
+  integer(c_int), parameter, public :: ASP_FFT_ESTIMATE = 101, ASP_FFT_MEASURE = 102
   ! Self-affine normalisation
-  integer(c_int), parameter, public :: ASP_RMS_HEIGHT = 1, ASP_RMS_SLOPE = 2
+  integer(c_int), parameter, public :: ASP_RMS_HEIGHT = 201, ASP_RMS_SLOPE = 202
   ! Scalar results
-  integer(c_int), parameter, public :: ASP_CONTACT_FRACTION = 1, ASP_MEAN_PRESSURE = 2, &
-      ASP_MEAN_GAP = 3, ASP_ELASTIC_ENERGY = 4, ASP_PENETRATION = 5, ASP_TOTAL_FORCE = 6, &
-      ASP_K0 = 7, ASP_REFERENCE_PRESSURE = 8
+  integer(c_int), parameter, public :: ASP_CONTACT_FRACTION = 301, ASP_MEAN_PRESSURE = 302, &
+      ASP_MEAN_GAP = 303, ASP_ELASTIC_ENERGY = 304, ASP_PENETRATION = 305, ASP_TOTAL_FORCE = 306, &
+      ASP_K0 = 307, ASP_REFERENCE_PRESSURE = 308, ASP_MEAN_MODE_ENERGY = 309
   ! Fields
-  integer(c_int), parameter, public :: ASP_FIELD_PRESSURE = 1, ASP_FIELD_GAP = 2, &
-      ASP_FIELD_DISPLACEMENT = 3, ASP_FIELD_TOPOGRAPHY = 4
+  integer(c_int), parameter, public :: ASP_FIELD_PRESSURE = 401, ASP_FIELD_GAP = 402, &
+      ASP_FIELD_DISPLACEMENT = 403, ASP_FIELD_TOPOGRAPHY = 404
   ! Controls
-  integer(c_int), parameter, public :: ASP_CONTROL_MEAN_PRESSURE = 1, &
-      ASP_CONTROL_PENETRATION = 2, ASP_CONTROL_MEAN_GAP = 3
+  integer(c_int), parameter, public :: ASP_CONTROL_MEAN_PRESSURE = 501, &
+      ASP_CONTROL_PENETRATION = 502, ASP_CONTROL_MEAN_GAP = 503
 
   public :: asp_string
   public :: asp_status_string, asp_last_error_message, asp_version_string, asp_abi_version

@@ -11,7 +11,9 @@
  * Grid       1D (nx pixels on a length lx) or 2D (nx x ny pixels on lx x ly), periodic.
  *            Pixel i sits at x_i = i*lx/nx (and y_j = j*ly/ny).
  * Layout     Every field is an array of doubles, x fastest: f[i + nx*j]. That is Fortran
- *            f(nx,ny) and NumPy shape (nx,ny) with order='F', without a copy.
+ *            f(nx,ny) and NumPy shape (nx,ny) with order='F', without a copy. It is also the
+ *            same memory as a C-order array of shape (ny,nx): one scan line of nx values per
+ *            row, which is how image and text files hold a surface.
  * Heights    h: the rigid surface, positive towards the elastic body (highest point touches
  *            first).
  * Penetration delta: rigid-body approach, 0 when max(h) just touches the undeformed body.
@@ -19,20 +21,26 @@
  * Gap        g = u - h + max(h) - delta, g >= 0 for a hard wall.
  * Pressure   p: positive is compressive. Mean pressure is force per unit area (2D) or force per
  *            unit length divided by lx (1D).
- * Elasticity p~(q) = K~(q) u~(q), K~(q) = E*|q|/2, E* the contact modulus. The q = 0 mode uses
- *            a finite stiffness K~(0) (see asp_system_set_k0); it links mean pressure and
- *            penetration, and so sets the force-penetration curve, never the pressure field
- *            under mean-pressure control.
+ * Modulus    E* = E/(1 - nu^2), the contact modulus of the elastic body (E Young's modulus,
+ *            nu Poisson's ratio). Two elastic bodies against each other behave as one rigid
+ *            and one elastic body of 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2.
+ * Elasticity p~(q) = K~(q) u~(q), K~(q) = E*|q|/2. The q = 0 mode uses a finite stiffness
+ *            K~(0) (see asp_system_set_k0); it links mean pressure and penetration, and so
+ *            sets the force-penetration curve, never the pressure field under mean-pressure
+ *            control.
  *
  * ---------------------------------------------------------------------------------------------
  * Handles and lifetimes
  * ---------------------------------------------------------------------------------------------
  * asp_grid    the discretisation: sizes, box, FFT plans. Immutable after creation.
  * asp_system  a contact problem on a grid: substrate, topography and the current state
- *             (pressure, gap, displacement). It borrows its grid: destroy the system first.
- *             Because the state lives here, a second solve on the same system warm-starts.
- * asp_solver  an algorithm, its options and the report of its last run. Independent of any
- *             system; one solver can be used on many systems.
+ *             (pressure, gap, displacement). Because the state lives here, a second solve on
+ *             the same system warm-starts.
+ * asp_solver  an algorithm, its options, and the report and history of its last run.
+ *             Independent of any system; one solver can be used on many systems.
+ * Handles may be destroyed in any order: a system keeps its grid alive (the library counts
+ * references), so asp_grid_destroy only gives up the caller's reference. Every destroy
+ * function accepts NULL.
  *
  * ---------------------------------------------------------------------------------------------
  * Errors
@@ -41,14 +49,34 @@
  * On failure, asp_last_error_message() tells which argument was wrong and why; outputs that
  * are handles are set to NULL, and the handles passed in are left as they were and stay
  * usable. The library never prints, never exits or aborts, and no C++ exception crosses
- * this interface.
+ * this interface. Every number the library returns is finite: a scene whose numbers doubles
+ * cannot hold (a modulus or box so extreme that the stiffness, the area or the pressures
+ * overflow) is refused with ASP_ERR_INVALID_ARGUMENT naming the argument, before any work.
+ *
+ * ---------------------------------------------------------------------------------------------
+ * Constants
+ * ---------------------------------------------------------------------------------------------
+ * Constants come in families, each with its own range of values: FFT planning 1xx,
+ * normalisations 2xx, scalar results 3xx, fields 4xx, controls 5xx, history columns 6xx,
+ * termination reasons 7xx. A value of one family passed where another is expected is refused
+ * with a message naming both, never misread. Status codes are 0..99.
+ *
+ * ---------------------------------------------------------------------------------------------
+ * Memory
+ * ---------------------------------------------------------------------------------------------
+ * A system holds 3 fields of nx*ny doubles (heights, pressure, gap): 24 bytes per pixel. A
+ * solve adds the work arrays of its algorithm ("pk": 36 bytes per pixel, see
+ * docs/performance.md); a grid adds FFTW's plans. A request whose arrays cannot be allocated
+ * returns ASP_ERR_OUT_OF_MEMORY and changes nothing.
  *
  * ---------------------------------------------------------------------------------------------
  * Threads
  * ---------------------------------------------------------------------------------------------
- * Distinct handles may be used from distinct threads at the same time. One handle must not
- * be used from two threads at once. FFTW planning is serialised inside the library; the
- * library never calls fftw_cleanup(), so it coexists with other FFTW users in the process.
+ * Distinct handles may be used from distinct threads at the same time, and several systems
+ * made on one grid may be solved at once from different threads (the grid's plans are shared
+ * and FFTW executes them concurrently). One handle must not be used from two threads at once.
+ * FFTW planning is serialised inside the library; the library never calls fftw_cleanup(), so
+ * it coexists with other FFTW users in the process.
  */
 #ifndef ASPERITY_ASPERITY_H
 #define ASPERITY_ASPERITY_H
@@ -68,13 +96,14 @@ extern "C" {
 #define ASP_OK 0
 #define ASP_ERR_NULL_POINTER 1    /* a required handle or pointer argument was NULL */
 #define ASP_ERR_INVALID_ARGUMENT 2 /* a value out of its domain: negative size, NaN, ... */
-#define ASP_ERR_SIZE_MISMATCH 3    /* an array count does not match the grid */
+#define ASP_ERR_SIZE_MISMATCH 3    /* an array count does not match what the call needs */
 #define ASP_ERR_OUT_OF_MEMORY 4
 #define ASP_ERR_UNSUPPORTED 5      /* valid request this algorithm or build does not provide */
-#define ASP_ERR_INVALID_STATE 6    /* call out of order, e.g. solve before a topography is set */
+#define ASP_ERR_INVALID_STATE 6    /* call out of order, e.g. a report before any solve */
 #define ASP_ERR_FFT 7              /* FFTW could not make a plan */
 #define ASP_ERR_CALLBACK 8         /* a user callback returned non-zero */
 #define ASP_ERR_INTERNAL 9         /* a bug in asperity; please report it with the message */
+#define ASP_ERR_IO 10              /* a file could not be read or written */
 
 /* A short, static, English description of a status code ("unknown status" for others). */
 ASP_EXPORT const char *asp_status_string(int status);
@@ -84,7 +113,7 @@ ASP_EXPORT const char *asp_status_string(int status);
  * the same thread. */
 ASP_EXPORT const char *asp_last_error_message(void);
 
-/* The library's version, e.g. "0.1.0"; compare with ASP_VERSION_STRING to detect a header and
+/* The library's version, e.g. "0.2.0"; compare with ASP_VERSION_STRING to detect a header and
  * library mismatch. */
 ASP_EXPORT const char *asp_version_string(void);
 
@@ -100,10 +129,12 @@ typedef struct asp_grid asp_grid;
 ASP_EXPORT int asp_grid_create_1d(int64_t nx, double lx, asp_grid **out);
 
 /* A 2D periodic grid of nx x ny pixels (each >= 1, any size: odd and prime sizes work) on a box
- * lx x ly. A 1 x N strip is a valid 2D grid. */
+ * lx x ly. A 1 x N strip is a valid 2D grid. The box must be representable: the area lx*ly,
+ * the pixel sizes and the largest wavevector 2 pi nx/lx must be finite, normal doubles. */
 ASP_EXPORT int asp_grid_create_2d(int64_t nx, int64_t ny, double lx, double ly, asp_grid **out);
 
-/* Accepts NULL. Destroy every system made on the grid first. */
+/* Gives up the caller's reference. The grid lives on while systems made on it exist.
+ * Accepts NULL. */
 ASP_EXPORT void asp_grid_destroy(asp_grid *grid);
 
 /* Dimension (1 or 2), sizes (ny = 1 in 1D), pixel count nx*ny, box lengths (ly = 1 in 1D,
@@ -112,16 +143,30 @@ ASP_EXPORT int asp_grid_get_shape(const asp_grid *grid, int *dimension, int64_t 
                                   int64_t *n_pixels);
 ASP_EXPORT int asp_grid_get_box(const asp_grid *grid, double *lx, double *ly);
 
-/* How hard FFTW looks for fast plans. ASP_FFT_ESTIMATE (default) plans at once;
- * ASP_FFT_MEASURE times candidates when the plans are first needed (a second or more on large
- * grids) and usually runs faster. Plans are made on first use, so set this right after
- * creating the grid; once plans exist the call returns ASP_ERR_INVALID_STATE. */
-#define ASP_FFT_ESTIMATE 0
-#define ASP_FFT_MEASURE 1
+/* How hard FFTW looks for fast plans.
+ *   ASP_FFT_MEASURE   (default) times candidate algorithms the first time a transform shape
+ *                     is needed in the process, and keeps the fastest. Measured cost of that
+ *                     first planning on one core: see docs/performance.md (about 0.1 s at
+ *                     256^2, a few seconds at 2048^2). Later grids of the same shape, in the
+ *                     same process, plan at once; asp_fft_export_wisdom and
+ *                     asp_fft_import_wisdom carry that knowledge across processes.
+ *   ASP_FFT_ESTIMATE  plans at once from heuristics; transforms usually run 1.5-2x slower.
+ * Plans are made on first use, so set this right after creating the grid; once plans exist
+ * the call returns ASP_ERR_INVALID_STATE. */
+#define ASP_FFT_ESTIMATE 101
+#define ASP_FFT_MEASURE 102
 ASP_EXPORT int asp_grid_set_fft_planning(asp_grid *grid, int planning);
+
+/* FFTW "wisdom": what planning with ASP_FFT_MEASURE has learnt in this process, saved to and
+ * loaded from a file, so that repeated runs skip the planning. Importing adds to what is
+ * known; a file written by another FFTW version or machine is accepted by FFTW only where it
+ * applies. Returns ASP_ERR_IO (naming the path) when the file cannot be written or read. */
+ASP_EXPORT int asp_fft_export_wisdom(const char *path);
+ASP_EXPORT int asp_fft_import_wisdom(const char *path);
 
 /* ============================================================================================
  * Topographies: functions that fill a caller's array of n = nx*ny heights on a grid.
+ * Caller arrays need no particular alignment (NumPy slices and Fortran sections are fine).
  * ========================================================================================== */
 
 /* h = 0 everywhere. */
@@ -156,13 +201,15 @@ ASP_EXPORT int asp_topography_double_sinewave(const asp_grid *grid, double ampli
  *   C(q) = C0                       for q_l <= q < q_r (q_r = 2 pi/rolloff)
  *   C(q) = C0 (q/q_r)^(-2-2 hurst)   for q_r <= q <= q_s (q_s = 2 pi/short_cutoff)
  *   C(q) = 0                        for q > q_s,
- * with the wavelengths ordered short_cutoff < rolloff <= long_cutoff. C0 is chosen so that
- * the surface has exactly the requested rms height (normalise = ASP_RMS_HEIGHT) or rms slope
+ * in 2D, and the same with the exponent -1-2 hurst on a 1D grid (the convention of the field,
+ * so that a Hurst exponent means the same roughness for a profile and for a surface), with the
+ * wavelengths ordered short_cutoff < rolloff <= long_cutoff. C0 is chosen so that the surface
+ * has exactly the requested rms height (normalise = ASP_RMS_HEIGHT) or rms slope
  * (ASP_RMS_SLOPE), as asp_topography_statistics measures them; the mean height is 0.
  * The surface is white noise from the seed, filtered by sqrt(C): the same seed and grid give
  * the same surface on every platform (to the last bits of the math library's cos and log). */
-#define ASP_RMS_HEIGHT 1
-#define ASP_RMS_SLOPE 2
+#define ASP_RMS_HEIGHT 201
+#define ASP_RMS_SLOPE 202
 ASP_EXPORT int asp_topography_self_affine(const asp_grid *grid, double hurst, double long_cutoff,
                                           double rolloff, double short_cutoff, int normalise,
                                           double target, int64_t seed, double *heights,
@@ -179,8 +226,9 @@ ASP_EXPORT int asp_topography_statistics(const asp_grid *grid, const double *hei
 
 /* Radially averaged power spectrum C(q), normalised so that rms_height^2 = integral of C over
  * wavevectors (2D: d^2q; 1D: dq over positive and negative q). The range 0 < |q| <= q_max of
- * the grid is cut into n_bins equal bins; q[k] is the mean |q| of the modes in bin k and c[k]
- * their mean C; a bin without modes gets q[k] = its centre and c[k] = 0. */
+ * the grid is cut into n_bins equal bins (1 <= n_bins <= nx*ny); q and c are arrays of n_bins
+ * doubles each, q[k] the mean |q| of the modes in bin k and c[k] their mean C; a bin without
+ * modes gets q[k] = its centre and c[k] = 0. */
 ASP_EXPORT int asp_topography_power_spectrum(const asp_grid *grid, const double *heights,
                                              int64_t n, int64_t n_bins, double *q, double *c);
 
@@ -190,17 +238,19 @@ ASP_EXPORT int asp_topography_power_spectrum(const asp_grid *grid, const double 
 typedef struct asp_system asp_system;
 
 /* A periodic elastic half-space of contact modulus E* = contact_modulus > 0 on the grid, with a
- * flat topography and zero pressure. The grid must outlive the system. */
+ * flat topography and zero pressure. The system keeps the grid alive. E* must leave the
+ * stiffness of every mode of the grid a finite, normal double. */
 ASP_EXPORT int asp_system_create(const asp_grid *grid, double contact_modulus, asp_system **out);
 ASP_EXPORT void asp_system_destroy(asp_system *system);
 
-/* Copies n = nx*ny heights. Resets the state to zero pressure (a new surface makes the old
- * state meaningless). */
+/* Copies n = nx*ny finite heights whose range max - min is a finite double. Resets the state
+ * to zero pressure (a new surface makes the old state meaningless). */
 ASP_EXPORT int asp_system_set_topography(asp_system *system, const double *heights, int64_t n);
 
 /* The stiffness K~(0) > 0 of the mean (q = 0) displacement mode. Default: the mean of K~ at the
  * lowest non-zero wavevector along x and along y (E* pi/lx in 1D), as in the thesis. Changing
- * it changes mean displacement and penetration, not the pressure under mean-pressure control. */
+ * it changes mean displacement and penetration, not the pressure under mean-pressure control,
+ * and not ASP_ELASTIC_ENERGY (see ASP_MEAN_MODE_ENERGY). */
 ASP_EXPORT int asp_system_set_k0(asp_system *system, double k0);
 
 /* The reference pressure that solver errors are divided by (see asp_solver_solve). Default 0:
@@ -213,40 +263,92 @@ ASP_EXPORT int asp_system_set_reference_pressure(asp_system *system, double refe
 /* Forgets the state (zero pressure), so the next solve starts cold. */
 ASP_EXPORT int asp_system_reset(asp_system *system);
 
-/* Scalar results of the current state, chosen by key. */
-#define ASP_CONTACT_FRACTION 1   /* fraction of pixels with positive (repulsive) pressure */
-#define ASP_MEAN_PRESSURE 2      /* mean of p over all pixels */
-#define ASP_MEAN_GAP 3           /* mean of g over all pixels */
-#define ASP_ELASTIC_ENERGY 4     /* (A/2) sum_q K~(q)|u^_q|^2 = (a/2) sum_i p_i u_i; per length in 1D */
-#define ASP_PENETRATION 5        /* delta */
-#define ASP_TOTAL_FORCE 6        /* mean pressure times lx*ly (per unit length in 1D: times lx) */
-#define ASP_K0 7                 /* the q = 0 stiffness in use */
-#define ASP_REFERENCE_PRESSURE 8 /* the reference pressure in use */
+/* Scalar results of the current state, chosen by key. In 1D, energies and forces are per unit
+ * length. */
+#define ASP_CONTACT_FRACTION 301   /* fraction of pixels with positive (repulsive) pressure */
+#define ASP_MEAN_PRESSURE 302      /* mean of p over all pixels */
+#define ASP_MEAN_GAP 303           /* mean of g over all pixels */
+#define ASP_ELASTIC_ENERGY 304     /* (A/2) sum over q != 0 of K~(q)|u^_q|^2: the energy of the
+                                      deformation, independent of the K~(0) convention */
+#define ASP_PENETRATION 305        /* delta */
+#define ASP_TOTAL_FORCE 306        /* mean pressure times lx*ly (1D: times lx) */
+#define ASP_K0 307                 /* the q = 0 stiffness in use */
+#define ASP_REFERENCE_PRESSURE 308 /* the reference pressure of the last solve */
+#define ASP_MEAN_MODE_ENERGY 309   /* the q = 0 term A pbar^2/(2 K~(0)), kept apart because it
+                                      depends on K~(0); ELASTIC + MEAN_MODE = (a/2) sum p u */
 ASP_EXPORT int asp_system_get(const asp_system *system, int key, double *value);
 
 /* Fields of the current state, copied into the caller's array of n = nx*ny doubles. */
-#define ASP_FIELD_PRESSURE 1
-#define ASP_FIELD_GAP 2
-#define ASP_FIELD_DISPLACEMENT 3
-#define ASP_FIELD_TOPOGRAPHY 4
+#define ASP_FIELD_PRESSURE 401
+#define ASP_FIELD_GAP 402
+#define ASP_FIELD_DISPLACEMENT 403
+#define ASP_FIELD_TOPOGRAPHY 404
 ASP_EXPORT int asp_system_get_field(const asp_system *system, int field, double *values,
                                     int64_t n);
+
+/* ============================================================================================
+ * Algorithms
+ * ========================================================================================== */
+
+/* The names of the algorithms of this build, one per line ("pk\n..."), written into buffer
+ * as a NUL-terminated string. For this and every other call that fills a string buffer:
+ * *length (if length is not NULL) receives the length of the whole text without its NUL;
+ * buffer may be NULL when size is 0 (to ask for the length); a buffer too small receives
+ * the text cut to size - 1 characters and the call returns ASP_ERR_SIZE_MISMATCH. */
+ASP_EXPORT int asp_algorithms(char *buffer, int64_t size, int64_t *length);
 
 /* ============================================================================================
  * Solver
  * ========================================================================================== */
 typedef struct asp_solver asp_solver;
 
-/* An algorithm by name:
+/* An algorithm by name (see asp_algorithms and docs/algorithms.md):
  *   "pk"  Polonsky & Keer constrained conjugate gradient on the pressure (hard wall, no
- *         adhesion). Controls: ASP_CONTROL_MEAN_PRESSURE, ASP_CONTROL_PENETRATION. */
+ *         adhesion, periodic substrate). Controls: ASP_CONTROL_MEAN_PRESSURE,
+ *         ASP_CONTROL_PENETRATION. */
 ASP_EXPORT int asp_solver_create(const char *algorithm, asp_solver **out);
 ASP_EXPORT void asp_solver_destroy(asp_solver *solver);
 
-/* Stop when the error falls to tolerance (> 0, default 1e-8), or after max_iterations (>= 1,
- * default 10000) iterations. */
+/* What the solver's algorithm does, the controls, substrates and interactions it serves, and
+ * each option with its type, default, range and meaning, as text (buffer rules as for
+ * asp_algorithms). */
+ASP_EXPORT int asp_solver_describe(const asp_solver *solver, char *buffer, int64_t size,
+                                   int64_t *length);
+
+/* Options by name. Every algorithm has
+ *   "tolerance"       real    > 0, default 1e-8: stop when the error falls to it;
+ *   "max_iterations"  integer >= 1, default 10000;
+ *   "stall_window"    integer >= 0, default 1000: stop as stalled when the smallest error
+ *                     seen has not fallen by 1 % within this many iterations (0: never);
+ * and its own options (asp_solver_describe lists them). Integer options take whole numbers
+ * given as doubles. An unknown name or a value outside the range is refused with
+ * ASP_ERR_INVALID_ARGUMENT, naming the option and listing the valid names or the range;
+ * a string option set as a number or the other way round likewise. */
+ASP_EXPORT int asp_solver_set_option(asp_solver *solver, const char *name, double value);
+ASP_EXPORT int asp_solver_set_option_string(asp_solver *solver, const char *name,
+                                            const char *value);
+ASP_EXPORT int asp_solver_get_option(const asp_solver *solver, const char *name, double *value);
+ASP_EXPORT int asp_solver_get_option_string(const asp_solver *solver, const char *name,
+                                            char *buffer, int64_t size, int64_t *length);
+
+/* Shorthands for asp_solver_set_option(solver, "tolerance", ...) and "max_iterations". */
 ASP_EXPORT int asp_solver_set_tolerance(asp_solver *solver, double tolerance);
 ASP_EXPORT int asp_solver_set_max_iterations(asp_solver *solver, int64_t max_iterations);
+
+/* Called once per iteration of every solve, after the error of that iteration is known, with
+ * the iteration number (0 is the starting point), the wall-clock seconds since the solve
+ * started and the error. Return 0 to go on; any other value stops the solve cleanly: the
+ * system holds the valid, consistent state of that iteration and the termination reason is
+ * ASP_TERMINATION_CANCELLED. The callback runs on the thread that called asp_solver_solve and
+ * must not use the solver or system being solved. NULL removes it. user_data is passed through
+ * untouched. */
+typedef int (*asp_progress_fn)(int64_t iteration, double seconds, double error, void *user_data);
+ASP_EXPORT int asp_solver_set_progress(asp_solver *solver, asp_progress_fn progress,
+                                       void *user_data);
+
+/* Records one row per iteration of the next solves (on != 0) or not (0, the default; then
+ * recording costs nothing). Each solve starts a new history. */
+ASP_EXPORT int asp_solver_set_history(asp_solver *solver, int on);
 
 /* Solves the system for the given control, starting from the system's current state, and
  * leaves the solution there.
@@ -254,22 +356,66 @@ ASP_EXPORT int asp_solver_set_max_iterations(asp_solver *solver, int64_t max_ite
  *                              the penetration is an unknown and is reported.
  *   ASP_CONTROL_PENETRATION    value = delta; the mean pressure is reported.
  *   ASP_CONTROL_MEAN_GAP       value = mean gap (not offered by "pk": ASP_ERR_UNSUPPORTED).
+ * A request the algorithm cannot serve (control, substrate, interaction) is refused with
+ * ASP_ERR_UNSUPPORTED before anything changes.
+ *
  * The error is the largest force-balance residual over the pixels in pressure units, divided
  * by the reference pressure; for pressure-based (dual) solvers the residual is the gap
  * violation (|g| where p > 0, max(-g, 0) where p = 0) times the stiffness of one pixel,
- * mean over q of K~(q). Reaching max_iterations is not an error: the call returns ASP_OK
- * and asp_solver_converged() reports 0. */
-#define ASP_CONTROL_MEAN_PRESSURE 1
-#define ASP_CONTROL_PENETRATION 2
-#define ASP_CONTROL_MEAN_GAP 3
+ * mean over q of K~(q).
+ *
+ * Every way a solve ends returns ASP_OK with a consistent, finite state in the system (the
+ * gap is the one the pressure produces); asp_solver_termination says which way it ended:
+ *   ASP_TERMINATION_CONVERGED        the error met the tolerance (the only case in which
+ *                                    asp_solver_converged reports 1);
+ *   ASP_TERMINATION_ITERATION_LIMIT  max_iterations iterations ran;
+ *   ASP_TERMINATION_CANCELLED        the progress callback returned non-zero;
+ *   ASP_TERMINATION_STALLED          no progress within stall_window iterations;
+ *   ASP_TERMINATION_BREAKDOWN        the arithmetic broke down (a non-finite value appeared);
+ *                                    the system is back at the state the solve started from.
+ * Errors (a status other than ASP_OK) mean the solve did not run or its result could not be
+ * stored; the system keeps the state it had before the call. */
+#define ASP_CONTROL_MEAN_PRESSURE 501
+#define ASP_CONTROL_PENETRATION 502
+#define ASP_CONTROL_MEAN_GAP 503
 ASP_EXPORT int asp_solver_solve(asp_solver *solver, asp_system *system, int control,
                                 double value);
 
-/* The report of the last solve. */
+/* The report of the last solve (ASP_ERR_INVALID_STATE before the first solve, or after a solve
+ * that returned an error: the report then describes nothing). Iterations count the steps
+ * taken; the error is that of the state left in the system; elapsed seconds are wall-clock
+ * time of the whole call, including the FFT planning a first solve on a grid may do. */
+#define ASP_TERMINATION_CONVERGED 701
+#define ASP_TERMINATION_ITERATION_LIMIT 702
+#define ASP_TERMINATION_CANCELLED 703
+#define ASP_TERMINATION_STALLED 704
+#define ASP_TERMINATION_BREAKDOWN 705
+ASP_EXPORT int asp_solver_termination(const asp_solver *solver, int *reason);
 ASP_EXPORT int asp_solver_iterations(const asp_solver *solver, int64_t *iterations);
 ASP_EXPORT int asp_solver_final_error(const asp_solver *solver, double *error);
 ASP_EXPORT int asp_solver_converged(const asp_solver *solver, int *converged);
 ASP_EXPORT int asp_solver_elapsed_seconds(const asp_solver *solver, double *seconds);
+
+/* The history of the last solve, when asp_solver_set_history was on: one row per iteration,
+ * starting with iteration 0 (the starting point). asp_solver_get_history copies one column
+ * into values, n = the history length.
+ *   ASP_HISTORY_ITERATION         iteration number
+ *   ASP_HISTORY_EVALUATIONS       objective or gradient evaluations so far
+ *   ASP_HISTORY_TRANSFORMS        FFTs so far (one forward or one backward transform each)
+ *   ASP_HISTORY_SECONDS           wall-clock seconds since the solve started
+ *   ASP_HISTORY_ERROR             the error (as compared with the tolerance)
+ *   ASP_HISTORY_OBJECTIVE         the algorithm's objective (docs/algorithms.md says which)
+ *   ASP_HISTORY_CONTACT_FRACTION  fraction of pixels in repulsive contact */
+#define ASP_HISTORY_ITERATION 601
+#define ASP_HISTORY_EVALUATIONS 602
+#define ASP_HISTORY_TRANSFORMS 603
+#define ASP_HISTORY_SECONDS 604
+#define ASP_HISTORY_ERROR 605
+#define ASP_HISTORY_OBJECTIVE 606
+#define ASP_HISTORY_CONTACT_FRACTION 607
+ASP_EXPORT int asp_solver_history_length(const asp_solver *solver, int64_t *length);
+ASP_EXPORT int asp_solver_get_history(const asp_solver *solver, int column, double *values,
+                                      int64_t n);
 
 #ifdef __cplusplus
 }

@@ -37,6 +37,7 @@ const char *asp_status_string(int status) {
     case ASP_ERR_FFT: return "FFT planning failed";
     case ASP_ERR_CALLBACK: return "a user callback reported failure";
     case ASP_ERR_INTERNAL: return "internal error";
+    case ASP_ERR_IO: return "a file could not be read or written";
     default: return "unknown status";
   }
 }

@@ -1,4 +1,5 @@
 // asp_grid_*: creation, queries and FFT planning of grids.
+#include "capi/constants.hpp"
 #include "capi/firewall.hpp"
 #include "capi/handles.hpp"
 #include "core/checks.hpp"
@@ -53,11 +54,9 @@ int asp_grid_get_box(const asp_grid *grid, double *lx, double *ly) {
 int asp_grid_set_fft_planning(asp_grid *grid, int planning) {
   return guarded("asp_grid_set_fft_planning", [&] {
     asp::require_not_null(grid, "grid");
-    if (planning != ASP_FFT_ESTIMATE && planning != ASP_FFT_MEASURE)
-      throw asp::Error(asp::Status::invalid_argument,
-                       "argument 'planning' must be ASP_FFT_ESTIMATE or ASP_FFT_MEASURE, got " +
-                           std::to_string(planning));
-    grid->grid->set_fft_planning(static_cast<asp::FftPlanning>(planning));
+    asp::capi::require_member(planning, asp::capi::Family::planning, "planning");
+    grid->grid->set_fft_planning(planning == ASP_FFT_MEASURE ? asp::FftPlanning::measure
+                                                             : asp::FftPlanning::estimate);
   });
 }
 

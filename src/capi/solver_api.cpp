@@ -1,6 +1,7 @@
 // asp_solver_*: algorithms, their options, solves and reports.
 #include <string>
 
+#include "capi/constants.hpp"
 #include "capi/firewall.hpp"
 #include "capi/handles.hpp"
 #include "core/checks.hpp"
@@ -52,12 +53,11 @@ int asp_solver_solve(asp_solver *solver, asp_system *system, int control, double
   return guarded("asp_solver_solve", [&] {
     asp::require_not_null(solver, "solver");
     asp::require_not_null(system, "system");
-    if (control != ASP_CONTROL_MEAN_PRESSURE && control != ASP_CONTROL_PENETRATION &&
-        control != ASP_CONTROL_MEAN_GAP)
-      throw asp::Error(asp::Status::invalid_argument,
-                       "argument 'control' is not an ASP_CONTROL_* value: " +
-                           std::to_string(control));
-    solver->solver->solve(*system->system, static_cast<asp::Control>(control), value);
+    asp::capi::require_member(control, asp::capi::Family::control, "control");
+    const asp::Control c = control == ASP_CONTROL_MEAN_PRESSURE ? asp::Control::mean_pressure
+                           : control == ASP_CONTROL_PENETRATION ? asp::Control::penetration
+                                                                : asp::Control::mean_gap;
+    solver->solver->solve(*system->system, c, value);
   });
 }
 

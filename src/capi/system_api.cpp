@@ -1,6 +1,7 @@
 // asp_system_*: a contact problem, its parameters and its current state.
 #include <algorithm>
 
+#include "capi/constants.hpp"
 #include "capi/firewall.hpp"
 #include "capi/handles.hpp"
 #include "core/checks.hpp"
@@ -57,6 +58,7 @@ int asp_system_get(const asp_system *system, int key, double *value) {
   return guarded("asp_system_get", [&] {
     asp::require_not_null(system, "system");
     asp::require_not_null(value, "value");
+    asp::capi::require_member(key, asp::capi::Family::scalar_key, "key");
     const asp::System &s = *system->system;
     switch (key) {
       case ASP_CONTACT_FRACTION: *value = s.contact_fraction(); break;
@@ -67,9 +69,9 @@ int asp_system_get(const asp_system *system, int key, double *value) {
       case ASP_TOTAL_FORCE: *value = s.mean_pressure() * s.grid().area(); break;
       case ASP_K0: *value = s.substrate().k0(); break;
       case ASP_REFERENCE_PRESSURE: *value = s.last_reference_pressure(); break;
+      case ASP_MEAN_MODE_ENERGY: *value = s.mean_mode_energy(); break;
       default:
-        throw asp::Error(asp::Status::invalid_argument,
-                         "argument 'key' is not an ASP_* result key: " + std::to_string(key));
+        throw asp::Error(asp::Status::internal, "scalar key without a getter");
     }
   });
 }
@@ -78,6 +80,7 @@ int asp_system_get_field(const asp_system *system, int field, double *values, in
   return guarded("asp_system_get_field", [&] {
     asp::require_not_null(system, "system");
     const asp::System &s = *system->system;
+    asp::capi::require_member(field, asp::capi::Family::field, "field");
     asp::require_array(values, n, s.grid().n_pixels(), "values");
     const asp::Field *source = nullptr;
     switch (field) {
@@ -86,8 +89,7 @@ int asp_system_get_field(const asp_system *system, int field, double *values, in
       case ASP_FIELD_TOPOGRAPHY: source = &s.heights(); break;
       case ASP_FIELD_DISPLACEMENT: s.displacement(values); return;
       default:
-        throw asp::Error(asp::Status::invalid_argument,
-                         "argument 'field' is not an ASP_FIELD_* key: " + std::to_string(field));
+        throw asp::Error(asp::Status::internal, "field without a getter");
     }
     std::copy(source->begin(), source->end(), values);
   });

@@ -1,4 +1,5 @@
 // asp_topography_*: surface generators and statistics, filling the caller's arrays.
+#include "capi/constants.hpp"
 #include "capi/firewall.hpp"
 #include "capi/handles.hpp"
 #include "core/checks.hpp"
@@ -58,16 +59,14 @@ int asp_topography_self_affine(const asp_grid *grid, double hurst, double long_c
                                double target, int64_t seed, double *heights, int64_t n) {
   return guarded("asp_topography_self_affine", [&] {
     const asp::Grid &g = grid_for(grid, heights, n);
-    if (normalise != ASP_RMS_HEIGHT && normalise != ASP_RMS_SLOPE)
-      throw asp::Error(asp::Status::invalid_argument,
-                       "argument 'normalise' must be ASP_RMS_HEIGHT or ASP_RMS_SLOPE, got " +
-                           std::to_string(normalise));
+    asp::capi::require_member(normalise, asp::capi::Family::normalisation, "normalise");
     asp::SelfAffineParameters p;
     p.hurst = hurst;
     p.long_cutoff = long_cutoff;
     p.rolloff = rolloff;
     p.short_cutoff = short_cutoff;
-    p.norm = static_cast<asp::RoughnessNorm>(normalise);
+    p.norm = normalise == ASP_RMS_HEIGHT ? asp::RoughnessNorm::rms_height
+                                         : asp::RoughnessNorm::rms_slope;
     p.target = target;
     p.seed = static_cast<std::uint64_t>(seed);
     asp::self_affine_topography(g, p, heights);

@@ -20,6 +20,7 @@ enum class Status : int {
   fft = 7,
   callback = 8,
   internal = 9,
+  io = 10,
 };
 
 class Error : public std::runtime_error {

@@ -66,6 +66,11 @@ void System::displacement(double *out) const {
   }
 }
 
+double System::mean_mode_energy() const {
+  const double p_mean = mean_pressure();
+  return 0.5 * grid_.area() * p_mean * (p_mean / substrate_.k0());
+}
+
 double System::elastic_energy() const {
   // E_el = (1/2) u.K u = (a/2) sum p_i u_i, since the state has p = K u.
   const double shift = state_.penetration - max_height_;

@@ -49,6 +49,7 @@ class System {
   double mean_pressure() const;
   double mean_gap() const;
   double elastic_energy() const;  // (a/2) sum p u
+  double mean_mode_energy() const;  // A pbar^2/(2 K~(0))
   void displacement(double *out) const;
 
  private:
