@@ -78,16 +78,16 @@ int main(int argc, char **argv) {
 
     const std::int64_t before = asp::field_bytes_in_use();
     asp::reset_field_bytes_peak();
-    asp::System system(*grid, modulus);
+    asp::System system(grid, modulus);
     system.set_topography(heights.data());
-    auto solver = asp::make_solver("pk");
-    solver->options().tolerance = tolerance;
+    asp::Solver solver("pk");
+    solver.set_option("tolerance", tolerance);
     // Best of three cold solves: the machine's noise only ever adds time.
     asp::SolveReport r;
     for (int run = 0; run < 3; ++run) {
       system.reset_state();
-      solver->solve(system, asp::Control::mean_pressure, mean_pressure);
-      if (run == 0 || solver->report().seconds < r.seconds) r = solver->report();
+      solver.solve(system, asp::Control::mean_pressure, mean_pressure);
+      if (run == 0 || solver.report().seconds < r.seconds) r = solver.report();
     }
     const double bytes_per_pixel =
         static_cast<double>(asp::field_bytes_peak() - before) / grid->n_pixels();
@@ -95,7 +95,7 @@ int main(int argc, char **argv) {
     std::printf("%6ld %12.3f %12.3f %7.2f %6lld %9.2f %9.4f %8.1f%s\n", n, 1e3 * fft,
                 1e3 * per_iteration, per_iteration / fft, static_cast<long long>(r.iterations),
                 r.seconds, system.contact_fraction(), bytes_per_pixel,
-                r.converged ? "" : "  (not converged)");
+                r.converged() ? "" : "  (not converged)");
     std::fflush(stdout);
   }
   return 0;

@@ -29,6 +29,7 @@ int asp_grid_create_2d(int64_t nx, int64_t ny, double lx, double ly, asp_grid **
   return create_grid("asp_grid_create_2d", 2, nx, ny, lx, ly, out);
 }
 
+// Drops the caller's reference; systems made on the grid keep their own.
 void asp_grid_destroy(asp_grid *grid) { delete grid; }
 
 int asp_grid_get_shape(const asp_grid *grid, int *dimension, int64_t *nx, int64_t *ny,
@@ -57,6 +58,20 @@ int asp_grid_set_fft_planning(asp_grid *grid, int planning) {
     asp::capi::require_member(planning, asp::capi::Family::planning, "planning");
     grid->grid->set_fft_planning(planning == ASP_FFT_MEASURE ? asp::FftPlanning::measure
                                                              : asp::FftPlanning::estimate);
+  });
+}
+
+int asp_fft_export_wisdom(const char *path) {
+  return guarded("asp_fft_export_wisdom", [&] {
+    asp::require_not_null(path, "path");
+    asp::export_fft_wisdom(path);
+  });
+}
+
+int asp_fft_import_wisdom(const char *path) {
+  return guarded("asp_fft_import_wisdom", [&] {
+    asp::require_not_null(path, "path");
+    asp::import_fft_wisdom(path);
   });
 }
 

@@ -1,4 +1,4 @@
-// What the opaque C handles hold. Each owns one C++ object; the C API never exposes them.
+// What the opaque C handles hold. The C API never exposes these types.
 #pragma once
 
 #include <memory>
@@ -7,8 +7,9 @@
 #include "physics/system.hpp"
 #include "solvers/solver.hpp"
 
+// The caller's reference to a grid; systems hold their own.
 struct asp_grid {
-  std::unique_ptr<asp::Grid> grid;
+  std::shared_ptr<asp::Grid> grid;
 };
 
 struct asp_system {

@@ -1,9 +1,10 @@
-// asp_solver_*: algorithms, their options, solves and reports.
+// asp_algorithms and asp_solver_*: algorithms, their options, solves, reports and histories.
 #include <string>
 
 #include "capi/constants.hpp"
 #include "capi/firewall.hpp"
 #include "capi/handles.hpp"
+#include "capi/text.hpp"
 #include "core/checks.hpp"
 
 using asp::capi::guarded;
@@ -13,12 +14,41 @@ const asp::SolveReport &report_of(const asp_solver *solver) {
   asp::require_not_null(solver, "solver");
   const asp::SolveReport &r = solver->solver->report();
   if (!r.available)
-    throw asp::Error(asp::Status::invalid_state, "the solver has not run a solve yet");
+    throw asp::Error(asp::Status::invalid_state,
+                     "the solver has no report: no solve has run, or the last one failed");
   return r;
+}
+
+asp::Control control_of(int control) {
+  asp::capi::require_member(control, asp::capi::Family::control, "control");
+  switch (control) {
+    case ASP_CONTROL_MEAN_PRESSURE: return asp::Control::mean_pressure;
+    case ASP_CONTROL_PENETRATION: return asp::Control::penetration;
+    default: return asp::Control::mean_gap;
+  }
+}
+
+int termination_code(asp::Termination termination) {
+  switch (termination) {
+    case asp::Termination::converged: return ASP_TERMINATION_CONVERGED;
+    case asp::Termination::iteration_limit: return ASP_TERMINATION_ITERATION_LIMIT;
+    case asp::Termination::cancelled: return ASP_TERMINATION_CANCELLED;
+    case asp::Termination::stalled: return ASP_TERMINATION_STALLED;
+    case asp::Termination::breakdown: return ASP_TERMINATION_BREAKDOWN;
+  }
+  throw asp::Error(asp::Status::internal, "termination reason without a code");
 }
 }  // namespace
 
 extern "C" {
+
+int asp_algorithms(char *buffer, int64_t size, int64_t *length) {
+  return guarded("asp_algorithms", [&] {
+    std::string text;
+    for (const asp::AlgorithmSpec &a : asp::algorithms()) text += a.name + "\n";
+    asp::capi::copy_text(text, buffer, size, length);
+  });
+}
 
 int asp_solver_create(const char *algorithm, asp_solver **out) {
   if (out != nullptr) *out = nullptr;
@@ -26,18 +56,59 @@ int asp_solver_create(const char *algorithm, asp_solver **out) {
     asp::require_not_null(algorithm, "algorithm");
     asp::require_not_null(out, "out");
     std::unique_ptr<asp_solver> handle(new asp_solver);
-    handle->solver = asp::make_solver(algorithm);
+    handle->solver.reset(new asp::Solver(algorithm));
     *out = handle.release();
   });
 }
 
 void asp_solver_destroy(asp_solver *solver) { delete solver; }
 
+int asp_solver_describe(const asp_solver *solver, char *buffer, int64_t size, int64_t *length) {
+  return guarded("asp_solver_describe", [&] {
+    asp::require_not_null(solver, "solver");
+    asp::capi::copy_text(asp::describe(solver->solver->algorithm()), buffer, size, length);
+  });
+}
+
+int asp_solver_set_option(asp_solver *solver, const char *name, double value) {
+  return guarded("asp_solver_set_option", [&] {
+    asp::require_not_null(solver, "solver");
+    asp::require_not_null(name, "name");
+    solver->solver->set_option(name, value);
+  });
+}
+
+int asp_solver_set_option_string(asp_solver *solver, const char *name, const char *value) {
+  return guarded("asp_solver_set_option_string", [&] {
+    asp::require_not_null(solver, "solver");
+    asp::require_not_null(name, "name");
+    asp::require_not_null(value, "value");
+    solver->solver->set_option(name, std::string(value));
+  });
+}
+
+int asp_solver_get_option(const asp_solver *solver, const char *name, double *value) {
+  return guarded("asp_solver_get_option", [&] {
+    asp::require_not_null(solver, "solver");
+    asp::require_not_null(name, "name");
+    asp::require_not_null(value, "value");
+    *value = solver->solver->option(name);
+  });
+}
+
+int asp_solver_get_option_string(const asp_solver *solver, const char *name, char *buffer,
+                                 int64_t size, int64_t *length) {
+  return guarded("asp_solver_get_option_string", [&] {
+    asp::require_not_null(solver, "solver");
+    asp::require_not_null(name, "name");
+    asp::capi::copy_text(solver->solver->option_text(name), buffer, size, length);
+  });
+}
+
 int asp_solver_set_tolerance(asp_solver *solver, double tolerance) {
   return guarded("asp_solver_set_tolerance", [&] {
     asp::require_not_null(solver, "solver");
-    asp::require_positive(tolerance, "tolerance");
-    solver->solver->options().tolerance = tolerance;
+    solver->solver->set_option("tolerance", tolerance);
   });
 }
 
@@ -45,7 +116,22 @@ int asp_solver_set_max_iterations(asp_solver *solver, int64_t max_iterations) {
   return guarded("asp_solver_set_max_iterations", [&] {
     asp::require_not_null(solver, "solver");
     asp::require_at_least(max_iterations, 1, "max_iterations");
-    solver->solver->options().max_iterations = max_iterations;
+    // Counts beyond 2^53 are not distinguishable as doubles; the option's range caps them.
+    solver->solver->set_option("max_iterations", static_cast<double>(max_iterations));
+  });
+}
+
+int asp_solver_set_progress(asp_solver *solver, asp_progress_fn progress, void *user_data) {
+  return guarded("asp_solver_set_progress", [&] {
+    asp::require_not_null(solver, "solver");
+    solver->solver->set_progress(progress, user_data);
+  });
+}
+
+int asp_solver_set_history(asp_solver *solver, int on) {
+  return guarded("asp_solver_set_history", [&] {
+    asp::require_not_null(solver, "solver");
+    solver->solver->set_history(on != 0);
   });
 }
 
@@ -53,11 +139,14 @@ int asp_solver_solve(asp_solver *solver, asp_system *system, int control, double
   return guarded("asp_solver_solve", [&] {
     asp::require_not_null(solver, "solver");
     asp::require_not_null(system, "system");
-    asp::capi::require_member(control, asp::capi::Family::control, "control");
-    const asp::Control c = control == ASP_CONTROL_MEAN_PRESSURE ? asp::Control::mean_pressure
-                           : control == ASP_CONTROL_PENETRATION ? asp::Control::penetration
-                                                                : asp::Control::mean_gap;
-    solver->solver->solve(*system->system, c, value);
+    solver->solver->solve(*system->system, control_of(control), value);
+  });
+}
+
+int asp_solver_termination(const asp_solver *solver, int *reason) {
+  return guarded("asp_solver_termination", [&] {
+    asp::require_not_null(reason, "reason");
+    *reason = termination_code(report_of(solver).termination);
   });
 }
 
@@ -78,7 +167,7 @@ int asp_solver_final_error(const asp_solver *solver, double *error) {
 int asp_solver_converged(const asp_solver *solver, int *converged) {
   return guarded("asp_solver_converged", [&] {
     asp::require_not_null(converged, "converged");
-    *converged = report_of(solver).converged ? 1 : 0;
+    *converged = report_of(solver).converged() ? 1 : 0;
   });
 }
 
@@ -86,6 +175,33 @@ int asp_solver_elapsed_seconds(const asp_solver *solver, double *seconds) {
   return guarded("asp_solver_elapsed_seconds", [&] {
     asp::require_not_null(seconds, "seconds");
     *seconds = report_of(solver).seconds;
+  });
+}
+
+int asp_solver_history_length(const asp_solver *solver, int64_t *length) {
+  return guarded("asp_solver_history_length", [&] {
+    asp::require_not_null(length, "length");
+    report_of(solver);
+    *length = static_cast<int64_t>(solver->solver->history().size());
+  });
+}
+
+int asp_solver_get_history(const asp_solver *solver, int column, double *values, int64_t n) {
+  return guarded("asp_solver_get_history", [&] {
+    asp::capi::require_member(column, asp::capi::Family::history_column, "column");
+    report_of(solver);
+    const asp::History &history = solver->solver->history();
+    const auto rows = static_cast<int64_t>(history.size());
+    asp::require_not_null(values, "values");
+    if (n != rows)
+      throw asp::Error(asp::Status::size_mismatch,
+                       "array 'values' has count " + std::to_string(n) +
+                           " but the history has " + std::to_string(rows) + " rows");
+    static_assert(ASP_HISTORY_CONTACT_FRACTION - ASP_HISTORY_ITERATION ==
+                      static_cast<int>(asp::HistoryColumn::contact_fraction),
+                  "history columns are numbered in the order of a row");
+    const int k = column - ASP_HISTORY_ITERATION;
+    for (int64_t i = 0; i < rows; ++i) values[i] = history[static_cast<std::size_t>(i)][k];
   });
 }
 

@@ -1,5 +1,6 @@
 // asp_system_*: a contact problem, its parameters and its current state.
 #include <algorithm>
+#include <cmath>
 
 #include "capi/constants.hpp"
 #include "capi/firewall.hpp"
@@ -16,7 +17,7 @@ int asp_system_create(const asp_grid *grid, double contact_modulus, asp_system *
     asp::require_not_null(grid, "grid");
     asp::require_not_null(out, "out");
     std::unique_ptr<asp_system> handle(new asp_system);
-    handle->system.reset(new asp::System(*grid->grid, contact_modulus));
+    handle->system.reset(new asp::System(grid->grid, contact_modulus));
     *out = handle.release();
   });
 }
@@ -60,19 +61,25 @@ int asp_system_get(const asp_system *system, int key, double *value) {
     asp::require_not_null(value, "value");
     asp::capi::require_member(key, asp::capi::Family::scalar_key, "key");
     const asp::System &s = *system->system;
+    double result = 0.0;
     switch (key) {
-      case ASP_CONTACT_FRACTION: *value = s.contact_fraction(); break;
-      case ASP_MEAN_PRESSURE: *value = s.mean_pressure(); break;
-      case ASP_MEAN_GAP: *value = s.mean_gap(); break;
-      case ASP_ELASTIC_ENERGY: *value = s.elastic_energy(); break;
-      case ASP_PENETRATION: *value = s.state().penetration; break;
-      case ASP_TOTAL_FORCE: *value = s.mean_pressure() * s.grid().area(); break;
-      case ASP_K0: *value = s.substrate().k0(); break;
-      case ASP_REFERENCE_PRESSURE: *value = s.last_reference_pressure(); break;
-      case ASP_MEAN_MODE_ENERGY: *value = s.mean_mode_energy(); break;
+      case ASP_CONTACT_FRACTION: result = s.contact_fraction(); break;
+      case ASP_MEAN_PRESSURE: result = s.mean_pressure(); break;
+      case ASP_MEAN_GAP: result = s.mean_gap(); break;
+      case ASP_ELASTIC_ENERGY: result = s.elastic_energy(); break;
+      case ASP_PENETRATION: result = s.state().penetration; break;
+      case ASP_TOTAL_FORCE: result = s.total_force(); break;
+      case ASP_K0: result = s.substrate().k0(); break;
+      case ASP_REFERENCE_PRESSURE: result = s.last_reference_pressure(); break;
+      case ASP_MEAN_MODE_ENERGY: result = s.mean_mode_energy(); break;
       default:
         throw asp::Error(asp::Status::internal, "scalar key without a getter");
     }
+    if (!std::isfinite(result))
+      throw asp::Error(asp::Status::invalid_argument,
+                       "argument 'key' " + std::to_string(key) +
+                           ": the result overflows a double in these units; rescale them");
+    *value = result;
   });
 }
 

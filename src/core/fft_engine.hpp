@@ -1,25 +1,27 @@
-// Real-to-complex and complex-to-real transforms of one grid, planned once and executed on
-// any pair of fields (FFTW's new-array interface; all fields share FFTW's alignment).
+// FFTW plans for one transform shape, executed on any pair of the library's own fields
+// (FFTW's new-array interface; every field is allocated by fftw_malloc, so all share the
+// alignment the plans were made for). Plans are never run on caller memory.
 //
 // Layout: real fields are x fastest, f[i + nx*j]; FFTW sees them as row-major arrays of shape
-// (ny, nx), so the half spectrum is halved along x: S[kx + (nx/2+1)*ky].
-// Neither transform is normalised: backward(forward(f)) = nx*ny*f.
+// (ny, nx). No transform is normalised: backward(forward(f)) = nx*ny*f.
 #pragma once
 
 #include <cstdint>
+#include <string>
 
 #include "core/aligned_field.hpp"
 
 namespace asp {
 
-enum class FftPlanning { estimate = 0, measure = 1 };
+enum class FftPlanning { estimate, measure };
 
-class FftEngine {
+// Real-to-complex and back: the half spectrum is halved along x, S[kx + (nx/2+1)*ky].
+class RealFft {
  public:
-  FftEngine(std::int64_t nx, std::int64_t ny, FftPlanning planning);
-  ~FftEngine();
-  FftEngine(const FftEngine &) = delete;
-  FftEngine &operator=(const FftEngine &) = delete;
+  RealFft(std::int64_t nx, std::int64_t ny, FftPlanning planning);
+  ~RealFft();
+  RealFft(const RealFft &) = delete;
+  RealFft &operator=(const RealFft &) = delete;
 
   void forward(const double *real, Complex *spectrum) const;
   // Destroys the spectrum it reads (FFTW's multi-dimensional c2r does).
@@ -29,5 +31,28 @@ class FftEngine {
   void *r2c_ = nullptr;  // fftw_plan, kept opaque so that fftw3.h stays out of the headers
   void *c2r_ = nullptr;
 };
+
+// The real half-complex transform along each axis (FFTW's R2HC and HC2R): nx*ny real
+// coefficients, x fastest like the field. Along an axis of n points, entry k holds the real
+// part of frequency k for k <= n/2 and the imaginary part of frequency n - k above.
+class HalfComplexFft {
+ public:
+  HalfComplexFft(std::int64_t nx, std::int64_t ny, FftPlanning planning);
+  ~HalfComplexFft();
+  HalfComplexFft(const HalfComplexFft &) = delete;
+  HalfComplexFft &operator=(const HalfComplexFft &) = delete;
+
+  void forward(const double *real, double *coefficients) const;
+  // Destroys the coefficients it reads.
+  void backward(double *coefficients, double *real) const;
+
+ private:
+  void *r2hc_ = nullptr;
+  void *hc2r_ = nullptr;
+};
+
+// FFTW's accumulated planning knowledge, to and from a file (throws Error(io) naming it).
+void export_fft_wisdom(const std::string &path);
+void import_fft_wisdom(const std::string &path);
 
 }  // namespace asp

@@ -1,5 +1,6 @@
 #include "core/grid.hpp"
 
+#include <cfloat>
 #include <cmath>
 #include <limits>
 
@@ -10,28 +11,48 @@ namespace asp {
 
 namespace {
 constexpr double two_pi = 6.283185307179586476925286766559;
-// FFTW takes int dimensions; larger grids would not fit in memory anyway.
-constexpr std::int64_t largest_axis = std::numeric_limits<int>::max();
+// FFTW takes int dimensions, and the padded shape of a non-periodic substrate doubles them.
+constexpr std::int64_t largest_axis = std::numeric_limits<int>::max() / 2;
+
+void check_axis(std::int64_t n, double length, const char *size_name, const char *length_name) {
+  require_at_least(n, 1, size_name);
+  if (n > largest_axis)
+    throw Error(Status::invalid_argument, std::string("argument '") + size_name + "' is " +
+                                              std::to_string(n) + ", more than FFTW can transform (" +
+                                              std::to_string(largest_axis) + ")");
+  require_positive(length, length_name);
+  // Pixel size and the largest wavevector 2 pi (n/2)/length must be normal doubles; squares
+  // of wavevectors (slopes, curvatures) must stay finite too, hence the margin.
+  const double pixel = length / static_cast<double>(n);
+  const double q_max = two_pi * static_cast<double>(n) / length;
+  if (!(pixel >= DBL_MIN) || !(q_max < 1e150))
+    throw Error(Status::invalid_argument,
+                std::string("argument '") + length_name + "' is " + format_number(length) +
+                    ": with " + std::to_string(n) + " pixels the pixel size " +
+                    format_number(pixel) + " or the largest wavevector " +
+                    format_number(q_max) + " is not representable; rescale the lengths");
+}
 }  // namespace
 
-std::unique_ptr<Grid> Grid::create(int dimension, std::int64_t nx, std::int64_t ny, double lx,
+std::shared_ptr<Grid> Grid::create(int dimension, std::int64_t nx, std::int64_t ny, double lx,
                                    double ly) {
-  require_at_least(nx, 1, "nx");
-  if (nx > largest_axis)
-    throw Error(Status::invalid_argument, "argument 'nx' is larger than FFTW can transform");
-  require_positive(lx, "lx");
+  check_axis(nx, lx, "nx", "lx");
   if (dimension == 2) {
-    require_at_least(ny, 1, "ny");
-    if (ny > largest_axis)
-      throw Error(Status::invalid_argument, "argument 'ny' is larger than FFTW can transform");
+    check_axis(ny, ly, "ny", "ly");
     if (nx > std::numeric_limits<std::int64_t>::max() / ny)
       throw Error(Status::invalid_argument, "arguments 'nx' and 'ny': nx*ny overflows int64");
-    require_positive(ly, "ly");
+    const double area = lx * ly;
+    const double pixel_area = (lx / static_cast<double>(nx)) * (ly / static_cast<double>(ny));
+    if (!std::isfinite(area) || !(pixel_area >= DBL_MIN))
+      throw Error(Status::invalid_argument,
+                  "arguments 'lx' and 'ly': the box area " + format_number(area) +
+                      " or the pixel area " + format_number(pixel_area) +
+                      " is not representable; rescale the lengths");
   } else {
     ny = 1;
     ly = 1.0;
   }
-  return std::unique_ptr<Grid>(new Grid(dimension, nx, ny, lx, ly));
+  return std::shared_ptr<Grid>(new Grid(dimension, nx, ny, lx, ly));
 }
 
 Grid::Grid(int dimension, std::int64_t nx, std::int64_t ny, double lx, double ly)
@@ -45,29 +66,45 @@ double Grid::qy(std::int64_t ky) const {
 }
 
 double Grid::hermitian_weight(std::int64_t kx) const {
-  // Entry kx of the half spectrum also stands for -kx, except kx = 0 and, for even nx, the
-  // Nyquist column kx = nx/2, which are their own partners.
   const bool self_partner = kx == 0 || (nx_ % 2 == 0 && kx == nx_ / 2);
   return self_partner ? 1.0 : 2.0;
 }
 
-const FftEngine &Grid::fft() const {
-  std::lock_guard<std::mutex> lock(fft_mutex_);
-  if (!fft_) fft_.reset(new FftEngine(nx_, ny_, planning_));
-  return *fft_;
+SpectralLayout Grid::half_spectrum() const {
+  return SpectralLayout(Packing::half_spectrum, nx_, ny_, lx_, ly_);
+}
+
+const RealFft &Grid::real_fft(std::int64_t nx, std::int64_t ny) const {
+  std::lock_guard<std::mutex> lock(plans_mutex_);
+  const auto key = std::make_tuple(nx, ny);
+  auto found = real_plans_.find(key);
+  if (found == real_plans_.end())
+    found = real_plans_.emplace(key, std::make_unique<RealFft>(nx, ny, planning_)).first;
+  return *found->second;
+}
+
+const HalfComplexFft &Grid::half_complex_fft() const {
+  std::lock_guard<std::mutex> lock(plans_mutex_);
+  if (!half_complex_plan_) half_complex_plan_.reset(new HalfComplexFft(nx_, ny_, planning_));
+  return *half_complex_plan_;
 }
 
 void Grid::set_fft_planning(FftPlanning planning) {
-  std::lock_guard<std::mutex> lock(fft_mutex_);
-  if (fft_)
+  std::lock_guard<std::mutex> lock(plans_mutex_);
+  if (!real_plans_.empty() || half_complex_plan_)
     throw Error(Status::invalid_state,
                 "the grid's FFT plans already exist; set the planning right after creating it");
   planning_ = planning;
 }
 
+FftPlanning Grid::fft_planning() const {
+  std::lock_guard<std::mutex> lock(plans_mutex_);
+  return planning_;
+}
+
 bool Grid::has_fft_plans() const {
-  std::lock_guard<std::mutex> lock(fft_mutex_);
-  return fft_ != nullptr;
+  std::lock_guard<std::mutex> lock(plans_mutex_);
+  return !real_plans_.empty() || half_complex_plan_ != nullptr;
 }
 
 }  // namespace asp

@@ -1,22 +1,29 @@
-// A periodic 1D or 2D grid: sizes, box, wavevectors and the FFT plans of that size.
+// A periodic 1D or 2D grid: sizes, box, spectral layouts and the FFT plans of its shapes.
+//
+// Grids are shared: every system made on a grid holds a reference, so that the handles of the
+// C API may be destroyed in any order.
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <mutex>
+#include <tuple>
 
 #include "core/aligned_field.hpp"
 #include "core/fft_engine.hpp"
 #include "core/reductions.hpp"
+#include "core/spectral_layout.hpp"
 
 namespace asp {
 
 class Grid {
  public:
-  // Checks its arguments (throws Error naming the bad one). 1D grids have ny = 1 and ly = 1,
-  // so that the pixel "area" lx/nx is the pixel length.
-  static std::unique_ptr<Grid> create(int dimension, std::int64_t nx, std::int64_t ny, double lx,
-                                      double ly);
+  // Checks its arguments (throws Error naming the bad one), including that the box can be
+  // represented: area, pixel size and largest wavevector are finite, normal doubles. 1D grids
+  // have ny = 1 and ly = 1, so that the pixel "area" lx/nx is the pixel length.
+  static std::shared_ptr<Grid> create(int dimension, std::int64_t nx, std::int64_t ny,
+                                      double lx, double ly);
   Grid(const Grid &) = delete;
   Grid &operator=(const Grid &) = delete;
 
@@ -27,22 +34,29 @@ class Grid {
   double ly() const { return ly_; }
   std::int64_t n_pixels() const { return nx_ * ny_; }
   double area() const { return lx_ * ly_; }
-  double pixel_area() const { return area() / static_cast<double>(n_pixels()); }
+  double pixel_area() const {
+    return (lx_ / static_cast<double>(nx_)) * (ly_ / static_cast<double>(ny_));
+  }
 
-  // Half spectrum: kx in [0, nx/2], ky in [0, ny).
+  // The r2c half spectrum of the grid: kx in [0, nx/2], ky in [0, ny).
+  SpectralLayout half_spectrum() const;
+  std::int64_t n_spectral() const { return (nx_ / 2 + 1) * ny_; }
   std::int64_t spectral_nx() const { return nx_ / 2 + 1; }
-  std::int64_t n_spectral() const { return spectral_nx() * ny_; }
   double qx(std::int64_t kx) const;  // 2 pi kx/lx
   double qy(std::int64_t ky) const;  // 2 pi k/ly, k = ky or ky - ny (nearest to zero)
-  // How many full-spectrum modes a half-spectrum entry stands for (1 or 2): the weight of
-  // that entry in Parseval sums.
   double hermitian_weight(std::int64_t kx) const;
 
   Field make_field() const { return Field(static_cast<std::size_t>(n_pixels()), 0.0); }
   Spectrum make_spectrum() const { return Spectrum(static_cast<std::size_t>(n_spectral())); }
 
-  const FftEngine &fft() const;  // plans on first use
+  // Plans, made on first use under the planner lock and kept for the grid's life, one per
+  // (shape, kind): the grid's own shape, or another one such as the padded 2nx x 2ny of a
+  // non-periodic substrate.
+  const RealFft &fft() const { return real_fft(nx_, ny_); }
+  const RealFft &real_fft(std::int64_t nx, std::int64_t ny) const;
+  const HalfComplexFft &half_complex_fft() const;
   void set_fft_planning(FftPlanning planning);
+  FftPlanning fft_planning() const;
   bool has_fft_plans() const;
 
   const Reductions &reductions() const { return reductions_; }
@@ -53,9 +67,10 @@ class Grid {
   int dimension_;
   std::int64_t nx_, ny_;
   double lx_, ly_;
-  FftPlanning planning_ = FftPlanning::estimate;
-  mutable std::mutex fft_mutex_;
-  mutable std::unique_ptr<FftEngine> fft_;
+  FftPlanning planning_ = FftPlanning::measure;
+  mutable std::mutex plans_mutex_;
+  mutable std::map<std::tuple<std::int64_t, std::int64_t>, std::unique_ptr<RealFft>> real_plans_;
+  mutable std::unique_ptr<HalfComplexFft> half_complex_plan_;
   LocalReductions reductions_;
 };
 

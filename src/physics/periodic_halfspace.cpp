@@ -1,105 +1,143 @@
 #include "physics/periodic_halfspace.hpp"
 
+#include <cfloat>
 #include <cmath>
 
 #include "core/checks.hpp"
+#include "core/error.hpp"
+#include "core/loops.hpp"
 
 namespace asp {
 
-PeriodicHalfSpace::PeriodicHalfSpace(const Grid &grid, double contact_modulus)
-    : grid_(grid), modulus_(contact_modulus) {
-  require_positive(contact_modulus, "contact_modulus");
-  k0_ = default_k0();
+const char *substrate_name(SubstrateKind kind) {
+  switch (kind) {
+    case SubstrateKind::periodic: return "periodic half-space";
+  }
+  return "unknown";
 }
 
-double PeriodicHalfSpace::default_k0() const {
-  // Mean of K~ at the lowest wavevector of each axis that has one; a single pixel has none,
-  // and then the x box length sets the scale.
+namespace {
+bool normal(double v) { return std::isfinite(v) && v >= DBL_MIN; }
+}  // namespace
+
+PeriodicHalfSpace::PeriodicHalfSpace(const Grid &grid, double contact_modulus)
+    : grid_(grid), layout_(grid.half_spectrum()), modulus_(contact_modulus) {
+  require_positive(contact_modulus, "contact_modulus");
+  const double n = static_cast<double>(grid.n_pixels());
+
+  // Every mode's stiffness, its inverse with the 1/N of the transform, and the sums below
+  // must be finite, normal doubles; otherwise the scene cannot be represented.
+  double q_min = HUGE_VAL, q_max = 0.0;
+  layout_.for_each([&](std::int64_t, double q, double) {
+    if (q > 0.0) q_min = std::fmin(q_min, q);
+    q_max = std::fmax(q_max, q);
+  });
+  // Default K~(0): mean of K~ at the lowest wavevector of each axis with more than one pixel;
+  // a single pixel has none, and then the x box length sets the scale.
+  const double two_pi = 6.283185307179586476925286766559;
   double sum = 0.0;
   int axes = 0;
-  if (grid_.nx() > 1) {
-    sum += 0.5 * modulus_ * grid_.qx(1);
-    ++axes;
-  }
-  if (grid_.ny() > 1) {
-    sum += 0.5 * modulus_ * grid_.qy(1);
-    ++axes;
-  }
-  return axes > 0 ? sum / axes : 0.5 * modulus_ * grid_.qx(1);
+  if (grid.nx() > 1) sum += 0.5 * modulus_ * (two_pi / grid.lx()), ++axes;
+  if (grid.ny() > 1) sum += 0.5 * modulus_ * (two_pi / grid.ly()), ++axes;
+  k0_ = axes > 0 ? sum / axes : 0.5 * modulus_ * (two_pi / grid.lx());
+
+  nonzero_stiffness_sum_ = 0.0;
+  layout_.for_each([&](std::int64_t, double q, double weight) {
+    if (q > 0.0) nonzero_stiffness_sum_ += weight * stiffness_at(q);
+  });
+  pixel_stiffness_ = (nonzero_stiffness_sum_ + k0_) / n;
+
+  const double k_min = q_min < HUGE_VAL ? std::fmin(stiffness_at(q_min), k0_) : k0_;
+  const double k_max = std::fmax(stiffness_at(q_max), k0_);
+  if (!normal(k_min) || !normal(n * k_max) || !normal(1.0 / (n * k_min)) ||
+      !normal(pixel_stiffness_) || !normal(nonzero_stiffness_sum_ + k0_))
+    throw Error(Status::invalid_argument,
+                "argument 'contact_modulus' is " + format_number(contact_modulus) +
+                    ": on this grid the stiffness E*|q|/2 of its modes ranges from " +
+                    format_number(k_min) + " to " + format_number(k_max) +
+                    ", which doubles cannot hold with their inverses; rescale the units");
 }
 
 void PeriodicHalfSpace::set_k0(double k0) {
   require_positive(k0, "k0");
   const double n = static_cast<double>(grid_.n_pixels());
-  if (!compliance_.empty()) compliance_[0] = 1.0 / (n * k0);
-  if (pixel_stiffness_ >= 0.0) pixel_stiffness_ += (k0 - k0_) / n;
+  const double pixel = (nonzero_stiffness_sum_ + k0) / n;
+  if (!normal(n * k0) || !normal(1.0 / (n * k0)) || !normal(pixel))
+    throw Error(Status::invalid_argument,
+                "argument 'k0' is " + format_number(k0) +
+                    ": its inverse or the pixel stiffness would not be a finite, normal double");
   k0_ = k0;
-}
-
-double PeriodicHalfSpace::stiffness(std::int64_t kx, std::int64_t ky) const {
-  if (kx == 0 && ky == 0) return k0_;
-  const double qx = grid_.qx(kx), qy = grid_.qy(ky);
-  return 0.5 * modulus_ * std::sqrt(qx * qx + qy * qy);
-}
-
-double PeriodicHalfSpace::pixel_stiffness() const {
-  if (pixel_stiffness_ < 0.0) {
-    double sum = 0.0;
-    for (std::int64_t ky = 0; ky < grid_.ny(); ++ky)
-      for (std::int64_t kx = 0; kx < grid_.spectral_nx(); ++kx)
-        sum += grid_.hermitian_weight(kx) * stiffness(kx, ky);
-    pixel_stiffness_ = sum / static_cast<double>(grid_.n_pixels());
-  }
-  return pixel_stiffness_;
+  pixel_stiffness_ = pixel;
+  // The q = 0 entry is the first of the half spectrum.
+  if (!compliance_.empty()) compliance_[0] = 1.0 / (n * k0_);
+  if (!stiffness_.empty()) stiffness_[0] = k0_ / n;
 }
 
 const Field &PeriodicHalfSpace::normalised_compliance() const {
   if (compliance_.empty()) {
-    Field c(static_cast<std::size_t>(grid_.n_spectral()));
+    Field c(static_cast<std::size_t>(layout_.size()));
     const double n = static_cast<double>(grid_.n_pixels());
-    const std::int64_t snx = grid_.spectral_nx();
-    for (std::int64_t ky = 0; ky < grid_.ny(); ++ky)
-      for (std::int64_t kx = 0; kx < snx; ++kx)
-        c[static_cast<std::size_t>(kx + snx * ky)] = 1.0 / (n * stiffness(kx, ky));
+    layout_.for_each([&](std::int64_t k, double q, double) { c[k] = 1.0 / (n * stiffness_at(q)); });
     compliance_ = std::move(c);
   }
   return compliance_;
 }
 
-void PeriodicHalfSpace::apply_kernel(const double *in, double *out, Complex *scratch,
-                                     bool inverse) const {
-  const FftEngine &fft = grid_.fft();
-  fft.forward(in, scratch);
-  const double n = static_cast<double>(grid_.n_pixels());
-  const std::int64_t snx = grid_.spectral_nx();
-  for (std::int64_t ky = 0; ky < grid_.ny(); ++ky)
-    for (std::int64_t kx = 0; kx < snx; ++kx) {
-      const double k = stiffness(kx, ky);
-      scratch[kx + snx * ky] *= inverse ? 1.0 / (n * k) : k / n;
-    }
-  fft.backward(scratch, out);
+const Field &PeriodicHalfSpace::normalised_stiffness() const {
+  if (stiffness_.empty()) {
+    Field s(static_cast<std::size_t>(layout_.size()));
+    const double n = static_cast<double>(grid_.n_pixels());
+    layout_.for_each([&](std::int64_t k, double q, double) { s[k] = stiffness_at(q) / n; });
+    stiffness_ = std::move(s);
+  }
+  return stiffness_;
 }
 
-void PeriodicHalfSpace::displacement_from_pressure(const double *pressure, double *displacement,
-                                                   Complex *scratch) const {
-  apply_kernel(pressure, displacement, scratch, true);
+void PeriodicHalfSpace::forward(const double *field, Complex *spectrum) const {
+  grid_.fft().forward(field, spectrum);
 }
 
-void PeriodicHalfSpace::pressure_from_displacement(const double *displacement, double *pressure,
-                                                   Complex *scratch) const {
-  apply_kernel(displacement, pressure, scratch, false);
+void PeriodicHalfSpace::backward(Complex *spectrum, double *field) const {
+  grid_.fft().backward(spectrum, field);
 }
 
-double PeriodicHalfSpace::elastic_energy(const double *displacement, Complex *scratch) const {
-  grid_.fft().forward(displacement, scratch);
-  const double n = static_cast<double>(grid_.n_pixels());
-  const std::int64_t snx = grid_.spectral_nx();
+void PeriodicHalfSpace::apply(const Field &kernel, const double *in, double *out) const {
+  Spectrum s = make_spectrum();
+  forward(in, s.data());
+  Complex *spectrum = s.data();
+  const double *k = kernel.data();
+  loops::for_each(layout_.size(), [&](std::int64_t i) { spectrum[i] *= k[i]; });
+  backward(s.data(), out);
+}
+
+void PeriodicHalfSpace::displacement_from_pressure(const double *pressure,
+                                                   double *displacement) const {
+  apply(normalised_compliance(), pressure, displacement);
+}
+
+void PeriodicHalfSpace::pressure_from_displacement(const double *displacement,
+                                                   double *pressure) const {
+  apply(normalised_stiffness(), displacement, pressure);
+}
+
+double PeriodicHalfSpace::elastic_energy(const double *displacement) const {
+  // (A/2) sum_q K~ |u^_q|^2 with u^ = FFT(u)/N. The displacement is divided by its largest
+  // magnitude first, so that squares cannot overflow for any representable field.
+  const std::int64_t n_pixels = grid_.n_pixels();
+  const double largest = loops::maximum(grid_.reductions(), n_pixels,
+                                        [&](std::int64_t i) { return std::fabs(displacement[i]); });
+  if (!(largest > 0.0)) return 0.0;
+  Field u = grid_.make_field();
+  loops::for_each(n_pixels, [&](std::int64_t i) { u[i] = displacement[i] / largest; });
+  Spectrum s = make_spectrum();
+  forward(u.data(), s.data());
+  const double n = static_cast<double>(n_pixels);
   double sum = 0.0;
-  for (std::int64_t ky = 0; ky < grid_.ny(); ++ky)
-    for (std::int64_t kx = 0; kx < snx; ++kx)
-      sum += grid_.hermitian_weight(kx) * stiffness(kx, ky) * std::norm(scratch[kx + snx * ky]);
+  layout_.for_each([&](std::int64_t k, double q, double weight) {
+    if (q > 0.0) sum += weight * (stiffness_at(q) / n) * (std::norm(s[k]) / n);
+  });
   grid_.reductions().combine_sums(&sum, 1);
-  return 0.5 * grid_.area() * sum / (n * n);
+  return 0.5 * grid_.area() * sum * largest * largest;
 }
 
 }  // namespace asp

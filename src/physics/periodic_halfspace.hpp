@@ -6,47 +6,51 @@
 // thesis's choice; E* pi/lx in 1D).
 #pragma once
 
-#include "core/aligned_field.hpp"
-#include "core/grid.hpp"
+#include "physics/substrate.hpp"
 
 namespace asp {
 
-class PeriodicHalfSpace {
+class PeriodicHalfSpace final : public Substrate {
  public:
+  // Throws Error(invalid_argument) naming 'contact_modulus' when the stiffness of some mode
+  // of the grid, or its inverse, would not be a finite, normal double.
   PeriodicHalfSpace(const Grid &grid, double contact_modulus);
 
-  const Grid &grid() const { return grid_; }
-  double contact_modulus() const { return modulus_; }
-  double k0() const { return k0_; }
-  void set_k0(double k0);
+  SubstrateKind kind() const override { return SubstrateKind::periodic; }
+  const Grid &grid() const override { return grid_; }
+  double contact_modulus() const override { return modulus_; }
 
-  // K~ of half-spectrum entry (kx, ky); K~(0) = k0.
-  double stiffness(std::int64_t kx, std::int64_t ky) const;
-  // The stiffness of one pixel: the pressure that a unit displacement of that pixel alone
-  // needs, i.e. the diagonal of K in real space, mean over all q of K~(q).
-  double pixel_stiffness() const;
+  const SpectralLayout &layout() const override { return layout_; }
+  Spectrum make_spectrum() const override { return grid_.make_spectrum(); }
+  void forward(const double *field, Complex *spectrum) const override;
+  void backward(Complex *spectrum, double *field) const override;
 
-  // u = K^-1 p and p = K u. `scratch` holds grid().n_spectral() entries.
-  void displacement_from_pressure(const double *pressure, double *displacement,
-                                  Complex *scratch) const;
-  void pressure_from_displacement(const double *displacement, double *pressure,
-                                  Complex *scratch) const;
-  // E_el = (A/2) sum_q K~(q) |u^_q|^2, u^ the DFT divided by the pixel count (thesis eq. 6).
-  double elastic_energy(const double *displacement, Complex *scratch) const;
+  const Field &normalised_compliance() const override;
+  const Field &normalised_stiffness() const override;
+  double pixel_stiffness() const override { return pixel_stiffness_; }
 
-  // 1/(N K~(q)) on the half spectrum: the compliance with the FFT normalisation folded in, so
-  // that backward(compliance * forward(p)) is u in one pass. Made on first use.
-  const Field &normalised_compliance() const;
+  double k0() const override { return k0_; }
+  void set_k0(double k0) override;
+
+  double elastic_energy(const double *displacement) const override;
+
+  // u = K^-1 p and p = K u on the grid.
+  void displacement_from_pressure(const double *pressure, double *displacement) const;
+  void pressure_from_displacement(const double *displacement, double *pressure) const;
 
  private:
-  double default_k0() const;
-  void apply_kernel(const double *in, double *out, Complex *scratch, bool inverse) const;
+  double stiffness_at(double q) const { return q > 0.0 ? 0.5 * modulus_ * q : k0_; }
+  void apply(const Field &kernel, const double *in, double *out) const;
 
   const Grid &grid_;
+  SpectralLayout layout_;
   double modulus_;
   double k0_;
-  mutable Field compliance_;
-  mutable double pixel_stiffness_ = -1.0;  // negative: not computed yet
+  double pixel_stiffness_ = 0.0;
+  double nonzero_stiffness_sum_ = 0.0;  // sum over q != 0 of weight * K~(q)
+  // Made on first use (a solver that needs neither pays for neither).
+  mutable Field compliance_;  // 1/(N K~) on the half spectrum
+  mutable Field stiffness_;   // K~/N
 };
 
 }  // namespace asp

@@ -3,24 +3,44 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/checks.hpp"
+#include "core/error.hpp"
+#include "core/loops.hpp"
+#include "physics/periodic_halfspace.hpp"
 #include "physics/surface_statistics.hpp"
 
 namespace asp {
 
-System::System(const Grid &grid, double contact_modulus)
-    : grid_(grid),
-      substrate_(grid, contact_modulus),
-      heights_(grid.make_field()),
-      state_{grid.make_field(), grid.make_field(), 0.0} {
+System::System(std::shared_ptr<const Grid> grid, double contact_modulus)
+    : grid_(std::move(grid)),
+      substrate_(new PeriodicHalfSpace(*grid_, contact_modulus)),
+      interaction_(new HardWall()),
+      heights_(grid_->make_field()),
+      state_{grid_->make_field(), grid_->make_field(), 0.0} {
   last_reference_pressure_ = reference_pressure(0.0);
   reset_state();
 }
 
 void System::set_topography(const double *heights) {
-  std::copy(heights, heights + grid_.n_pixels(), heights_.begin());
-  max_height_ = grid_.reductions().max(heights_.data(), grid_.n_pixels());
-  slope_pressure_ =
-      0.5 * substrate_.contact_modulus() * surface_statistics(grid_, heights_.data()).rms_slope;
+  const std::int64_t n = grid_->n_pixels();
+  const Reductions &reduce = grid_->reductions();
+  const double top = loops::maximum(reduce, n, [&](std::int64_t i) { return heights[i]; });
+  const double bottom = -loops::maximum(reduce, n, [&](std::int64_t i) { return -heights[i]; });
+  if (!std::isfinite(top - bottom))
+    throw Error(Status::invalid_argument,
+                "array 'heights' spans " + format_number(bottom) + " to " + format_number(top) +
+                    "; the range max - min must be a finite double");
+  const double slope_pressure =
+      0.5 * substrate_->contact_modulus() * surface_statistics(*grid_, heights).rms_slope;
+  if (!std::isfinite(slope_pressure))
+    throw Error(Status::invalid_argument,
+                "array 'heights': the pressure scale E* h'_rms/2 of this surface is not a "
+                "finite double; rescale the heights or the modulus");
+
+  std::copy(heights, heights + n, heights_.begin());
+  max_height_ = top;
+  height_range_ = top - bottom;
+  slope_pressure_ = slope_pressure;
   last_reference_pressure_ = reference_pressure(0.0);
   reset_state();
 }
@@ -29,58 +49,52 @@ double System::reference_pressure(double control_scale) const {
   if (reference_pressure_override_ > 0.0) return reference_pressure_override_;
   if (slope_pressure_ > 0.0) return slope_pressure_;
   if (control_scale > 0.0) return control_scale;
-  return substrate_.contact_modulus();
+  return substrate_->contact_modulus();
 }
 
 void System::reset_state() {
-  // Zero pressure: the undeformed body touching the highest point, gap = max h - h.
-  std::fill(state_.pressure.begin(), state_.pressure.end(), 0.0);
-  for (std::int64_t k = 0; k < grid_.n_pixels(); ++k)
-    state_.gap[static_cast<std::size_t>(k)] = max_height_ - heights_[static_cast<std::size_t>(k)];
+  double *p = state_.pressure.data();
+  double *g = state_.gap.data();
+  const double *h = heights_.data();
+  loops::for_each(grid_->n_pixels(), [&](std::int64_t i) {
+    p[i] = 0.0;
+    g[i] = max_height_ - h[i];
+  });
   state_.penetration = 0.0;
 }
 
-double System::contact_fraction() const {
-  double count = 0.0;
-  for (double p : state_.pressure) count += p > 0.0 ? 1.0 : 0.0;
-  grid_.reductions().combine_sums(&count, 1);
-  return count / static_cast<double>(grid_.n_pixels());
-}
-
 double System::mean_pressure() const {
-  return grid_.reductions().sum(state_.pressure.data(), grid_.n_pixels()) /
-         static_cast<double>(grid_.n_pixels());
+  const double *p = state_.pressure.data();
+  // Each term divided by N first: the sum of finite pressures cannot overflow.
+  const double n = static_cast<double>(grid_->n_pixels());
+  return loops::sum(grid_->reductions(), grid_->n_pixels(), [&](std::int64_t i) { return p[i] / n; });
 }
 
 double System::mean_gap() const {
-  return grid_.reductions().sum(state_.gap.data(), grid_.n_pixels()) /
-         static_cast<double>(grid_.n_pixels());
+  const double *g = state_.gap.data();
+  const double n = static_cast<double>(grid_->n_pixels());
+  return loops::sum(grid_->reductions(), grid_->n_pixels(), [&](std::int64_t i) { return g[i] / n; });
 }
+
+double System::total_force() const { return mean_pressure() * grid_->area(); }
 
 void System::displacement(double *out) const {
   // u = g + h - max h + delta, from the definition of the gap.
   const double shift = state_.penetration - max_height_;
-  for (std::int64_t k = 0; k < grid_.n_pixels(); ++k) {
-    const auto i = static_cast<std::size_t>(k);
-    out[k] = state_.gap[i] + heights_[i] + shift;
-  }
+  const double *g = state_.gap.data();
+  const double *h = heights_.data();
+  loops::for_each(grid_->n_pixels(), [&](std::int64_t i) { out[i] = g[i] + h[i] + shift; });
+}
+
+double System::elastic_energy() const {
+  Field u = grid_->make_field();
+  displacement(u.data());
+  return substrate_->elastic_energy(u.data());
 }
 
 double System::mean_mode_energy() const {
   const double p_mean = mean_pressure();
-  return 0.5 * grid_.area() * p_mean * (p_mean / substrate_.k0());
-}
-
-double System::elastic_energy() const {
-  // E_el = (1/2) u.K u = (a/2) sum p_i u_i, since the state has p = K u.
-  const double shift = state_.penetration - max_height_;
-  double sum = 0.0;
-  for (std::int64_t k = 0; k < grid_.n_pixels(); ++k) {
-    const auto i = static_cast<std::size_t>(k);
-    sum += state_.pressure[i] * (state_.gap[i] + heights_[i] + shift);
-  }
-  grid_.reductions().combine_sums(&sum, 1);
-  return 0.5 * grid_.pixel_area() * sum;
+  return 0.5 * grid_->area() * p_mean * (p_mean / substrate_->k0());
 }
 
 }  // namespace asp

@@ -1,10 +1,13 @@
-// A contact problem on a grid: the substrate, the rigid topography and the current state.
-// The state is kept between solves so that a load sweep warm-starts.
+// A contact problem on a grid: the substrate, the interaction, the rigid topography and the
+// current state. The state is kept between solves so that a load sweep warm-starts.
 #pragma once
+
+#include <memory>
 
 #include "core/aligned_field.hpp"
 #include "core/grid.hpp"
-#include "physics/periodic_halfspace.hpp"
+#include "physics/interaction.hpp"
+#include "physics/substrate.hpp"
 
 namespace asp {
 
@@ -18,16 +21,20 @@ struct ContactState {
 
 class System {
  public:
-  System(const Grid &grid, double contact_modulus);
+  // A periodic half-space with a non-adhesive hard wall and a flat topography. The system
+  // holds a reference to the grid, which therefore outlives every system made on it.
+  System(std::shared_ptr<const Grid> grid, double contact_modulus);
 
-  const Grid &grid() const { return grid_; }
-  const PeriodicHalfSpace &substrate() const { return substrate_; }
-  void set_k0(double k0) { substrate_.set_k0(k0); }
+  const Grid &grid() const { return *grid_; }
+  const Substrate &substrate() const { return *substrate_; }
+  const Interaction &interaction() const { return *interaction_; }
+  void set_k0(double k0) { substrate_->set_k0(k0); }
 
-  // Copies the heights and resets the state.
+  // Copies the heights (finite, with a finite range max - min) and resets the state.
   void set_topography(const double *heights);
   const Field &heights() const { return heights_; }
   double max_height() const { return max_height_; }
+  double height_range() const { return height_range_; }
 
   // 0 selects the default; see asp_system_set_reference_pressure.
   void set_reference_pressure(double p) {
@@ -42,22 +49,26 @@ class System {
 
   ContactState &state() { return state_; }
   const ContactState &state() const { return state_; }
+  // Zero pressure: the undeformed body touching the highest point.
   void reset_state();
 
   // Observables of the current state.
-  double contact_fraction() const;
+  double contact_fraction() const { return interaction_->contact_fraction(*grid_, state_); }
   double mean_pressure() const;
   double mean_gap() const;
-  double elastic_energy() const;  // (a/2) sum p u
+  double total_force() const;
+  double elastic_energy() const;    // q != 0 modes, see Substrate::elastic_energy
   double mean_mode_energy() const;  // A pbar^2/(2 K~(0))
   void displacement(double *out) const;
 
  private:
-  const Grid &grid_;
-  PeriodicHalfSpace substrate_;
+  std::shared_ptr<const Grid> grid_;
+  std::unique_ptr<Substrate> substrate_;
+  std::unique_ptr<Interaction> interaction_;
   Field heights_;
   double max_height_ = 0.0;
-  double slope_pressure_ = 0.0;  // E* h'_rms / 2
+  double height_range_ = 0.0;
+  double slope_pressure_ = 0.0;  // E* h'_rms/2
   double reference_pressure_override_ = 0.0;
   double last_reference_pressure_ = 0.0;
   ContactState state_;

@@ -1,42 +1,123 @@
 #include "solvers/solver.hpp"
 
-#include <chrono>
+#include <cmath>
 
 #include "core/checks.hpp"
 #include "core/error.hpp"
-#include "solvers/polonsky_keer.hpp"
 
 namespace asp {
 
-const char *control_name(Control control) {
-  switch (control) {
-    case Control::mean_pressure: return "mean pressure";
-    case Control::penetration: return "penetration";
-    case Control::mean_gap: return "mean gap";
+Solver::Solver(const std::string &algorithm) : algorithm_(find_algorithm(algorithm)) {
+  for (const OptionSpec &o : algorithm_.options) {
+    if (o.type == OptionType::choice)
+      options_.texts[o.name] = o.choices.front();
+    else
+      options_.numbers[o.name] = o.default_value;
   }
-  return "unknown";
 }
 
-void Solver::check_target(Control, double value) const { require_finite(value, "value"); }
+const OptionSpec &Solver::spec_of(const std::string &name) const {
+  std::string valid;
+  for (const OptionSpec &o : algorithm_.options) {
+    if (o.name == name) return o;
+    valid += (valid.empty() ? "" : ", ") + o.name;
+  }
+  throw Error(Status::invalid_argument, "argument 'name': solver '" + algorithm_.name +
+                                            "' has no option '" + name + "' (options: " +
+                                            valid + ")");
+}
+
+void Solver::set_option(const std::string &name, double value) {
+  const OptionSpec &o = spec_of(name);
+  if (o.type == OptionType::choice)
+    throw Error(Status::invalid_argument, "option '" + name +
+                                              "' takes a string (set it with "
+                                              "asp_solver_set_option_string), not a number");
+  const bool above_minimum = o.minimum_excluded ? value > o.minimum : value >= o.minimum;
+  if (!std::isfinite(value) || !above_minimum || value > o.maximum ||
+      (o.type == OptionType::integer && value != std::floor(value)))
+    throw Error(Status::invalid_argument,
+                "option '" + name + "' must be " +
+                    (o.type == OptionType::integer ? "a whole number" : "a real number") +
+                    " in " + (o.minimum_excluded ? "(" : "[") + format_number(o.minimum) +
+                    ", " + format_number(o.maximum) + "], got " + format_number(value));
+  options_.numbers[name] = value;
+}
+
+void Solver::set_option(const std::string &name, const std::string &value) {
+  const OptionSpec &o = spec_of(name);
+  if (o.type != OptionType::choice)
+    throw Error(Status::invalid_argument, "option '" + name +
+                                              "' takes a number (set it with "
+                                              "asp_solver_set_option), not a string");
+  std::string valid;
+  for (const std::string &c : o.choices) {
+    if (c == value) {
+      options_.texts[name] = value;
+      return;
+    }
+    valid += (valid.empty() ? "" : ", ") + c;
+  }
+  throw Error(Status::invalid_argument,
+              "option '" + name + "' must be one of " + valid + ", got '" + value + "'");
+}
+
+double Solver::option(const std::string &name) const {
+  const OptionSpec &o = spec_of(name);
+  if (o.type == OptionType::choice)
+    throw Error(Status::invalid_argument,
+                "option '" + name + "' is a string (read it with asp_solver_get_option_string)");
+  return options_.number(name);
+}
+
+const std::string &Solver::option_text(const std::string &name) const {
+  const OptionSpec &o = spec_of(name);
+  if (o.type != OptionType::choice)
+    throw Error(Status::invalid_argument,
+                "option '" + name + "' is a number (read it with asp_solver_get_option)");
+  return options_.text(name);
+}
+
+void Solver::set_progress(ProgressFunction progress, void *user_data) {
+  progress_ = progress;
+  progress_data_ = user_data;
+}
 
 void Solver::solve(System &system, Control control, double value) {
-  if (!supports(control))
-    throw Error(Status::unsupported, std::string("solver '") + name() + "' does not offer " +
-                                         control_name(control) + " control");
-  check_target(control, value);
-  const auto start = std::chrono::steady_clock::now();
-  SolveReport report;
-  run(system, control, value, report);
-  report.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  report.available = true;
-  report_ = report;
+  check_request(algorithm_, system, control);
+  require_finite(value, "value");
+  if (control == Control::mean_pressure && value < 0.0 &&
+      system.interaction().kind() == InteractionKind::hard_wall)
+    throw Error(Status::invalid_argument,
+                "argument 'value' is " + format_number(value) +
+                    ": a non-adhesive hard wall cannot carry a negative mean pressure");
+
+  report_ = SolveReport();
+  history_.clear();
+  MonitorSettings settings;
+  settings.tolerance = options_.number("tolerance");
+  settings.max_iterations = static_cast<std::int64_t>(options_.number("max_iterations"));
+  settings.stall_window = static_cast<std::int64_t>(options_.number("stall_window"));
+  settings.record_history = record_history_;
+  settings.progress = progress_;
+  settings.progress_data = progress_data_;
+  Monitor monitor(settings);
+
+  algorithm_.run(system, control, value, options_, monitor);
+
+  report_.iterations = monitor.iterations();
+  report_.error = monitor.error();
+  report_.termination = monitor.termination();
+  report_.seconds = monitor.seconds();
+  report_.available = true;
+  history_ = std::move(monitor.history());
 }
 
-std::unique_ptr<Solver> make_solver(const std::string &name) {
-  if (name == "pk") return std::unique_ptr<Solver>(new PolonskyKeer());
-  throw Error(Status::unsupported,
-              "argument 'algorithm': unknown algorithm '" + name + "' (available: \"pk\")");
+void conclude(Formulation &formulation, System &system, Monitor &monitor) {
+  if (monitor.termination() == Termination::breakdown || !formulation.finish()) {
+    system.reset_state();
+    monitor.declare_breakdown();
+  }
 }
 
 }  // namespace asp

@@ -1,58 +1,67 @@
-// What every algorithm shares: options, the report of the last run, and the solve entry point
-// that checks the request and times the run.
+// A solver: one algorithm of the registry, its option values, the progress callback, and the
+// report and history of its last solve.
 #pragma once
 
 #include <cstdint>
-#include <memory>
 #include <string>
 
 #include "physics/system.hpp"
+#include "solvers/control.hpp"
+#include "solvers/formulation.hpp"
+#include "solvers/monitor.hpp"
+#include "solvers/registry.hpp"
 
 namespace asp {
 
-enum class Control { mean_pressure = 1, penetration = 2, mean_gap = 3 };
-
-const char *control_name(Control control);
-
-struct SolverOptions {
-  double tolerance = 1e-8;
-  std::int64_t max_iterations = 10000;
-};
-
 struct SolveReport {
-  bool available = false;  // false until a solve has run
+  bool available = false;  // false until a solve has run (and after one that failed)
   std::int64_t iterations = 0;
   double error = 0.0;
-  bool converged = false;
+  Termination termination = Termination::iteration_limit;
   double seconds = 0.0;
+  bool converged() const { return termination == Termination::converged; }
 };
 
 class Solver {
  public:
-  virtual ~Solver() = default;
-  virtual const char *name() const = 0;
-  virtual bool supports(Control control) const = 0;
+  // The algorithm of that name with its default options (throws Error(unsupported) naming
+  // the known algorithms otherwise).
+  explicit Solver(const std::string &algorithm);
+
+  const AlgorithmSpec &algorithm() const { return algorithm_; }
+
+  // Options by name; unknown names, wrong types and values out of range are refused with
+  // Error(invalid_argument) naming the option and what is valid.
+  void set_option(const std::string &name, double value);
+  void set_option(const std::string &name, const std::string &value);
+  double option(const std::string &name) const;
+  const std::string &option_text(const std::string &name) const;
+
+  void set_progress(ProgressFunction progress, void *user_data);
+  void set_history(bool on) { record_history_ = on; }
 
   // Checks the request (throws Error before touching the system), runs the algorithm from the
-  // system's current state and records the report.
+  // system's current state and records the report and, if asked, the history.
   void solve(System &system, Control control, double value);
 
-  SolverOptions &options() { return options_; }
   const SolveReport &report() const { return report_; }
-
- protected:
-  // Runs the algorithm; fills iterations, error and converged of the report.
-  virtual void run(System &system, Control control, double value, SolveReport &report) = 0;
-  // Extra checks of the target value for this algorithm.
-  virtual void check_target(Control control, double value) const;
-
-  SolverOptions options_;
+  const History &history() const { return history_; }
 
  private:
+  const OptionSpec &spec_of(const std::string &name) const;
+
+  const AlgorithmSpec &algorithm_;
+  OptionValues options_;
+  ProgressFunction progress_ = nullptr;
+  void *progress_data_ = nullptr;
+  bool record_history_ = false;
   SolveReport report_;
+  History history_;
 };
 
-// "pk", ...; throws Error(unsupported) naming the known algorithms for anything else.
-std::unique_ptr<Solver> make_solver(const std::string &name);
+// The end of every algorithm's run: writes the formulation's iterate back into the system, or,
+// after a breakdown (seen by the monitor or in the physical values), resets the system to zero
+// pressure and records the breakdown.
+void conclude(Formulation &formulation, System &system, Monitor &monitor);
 
 }  // namespace asp

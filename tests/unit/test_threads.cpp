@@ -9,8 +9,8 @@
 
 namespace {
 
-std::vector<double> solve_on(const asp::Grid &grid, std::uint64_t seed) {
-  const std::vector<double> h = asp_test::rough_surface(grid, seed);
+std::vector<double> solve_on(const std::shared_ptr<asp::Grid> &grid, std::uint64_t seed) {
+  const std::vector<double> h = asp_test::rough_surface(*grid, seed);
   asp::System system(grid, 1.0);
   system.set_topography(h.data());
   asp_test::solve_pk(system, asp::Control::mean_pressure, 0.005, 1e-10);
@@ -18,13 +18,13 @@ std::vector<double> solve_on(const asp::Grid &grid, std::uint64_t seed) {
 }
 
 TEST(Threads, ConcurrentSolvesOnASharedGridMatchSerialOnes) {
-  const std::vector<double> serial_a = solve_on(*asp_test::grid_2d(96, 96, 1.0, 1.0), 1);
-  const std::vector<double> serial_b = solve_on(*asp_test::grid_2d(96, 96, 1.0, 1.0), 2);
+  const std::vector<double> serial_a = solve_on(asp_test::grid_2d(96, 96, 1.0, 1.0), 1);
+  const std::vector<double> serial_b = solve_on(asp_test::grid_2d(96, 96, 1.0, 1.0), 2);
   for (int round = 0; round < 3; ++round) {
     auto shared = asp_test::grid_2d(96, 96, 1.0, 1.0);  // plans not made yet: both threads race
     std::vector<double> a, b;
-    std::thread first([&] { a = solve_on(*shared, 1); });
-    std::thread second([&] { b = solve_on(*shared, 2); });
+    std::thread first([&] { a = solve_on(shared, 1); });
+    std::thread second([&] { b = solve_on(shared, 2); });
     first.join();
     second.join();
     EXPECT_EQ(a, serial_a);

@@ -138,7 +138,7 @@ TEST(SelfAffineSurface, RejectsCutoffsInTheWrongOrder) {
 }
 
 TEST(PowerSpectrum, IntegratesToTheMeanSquareHeight) {
-  std::unique_ptr<asp::Grid> grids[] = {asp_test::grid_2d(64, 48, 2.0, 1.5),
+  std::shared_ptr<asp::Grid> grids[] = {asp_test::grid_2d(64, 48, 2.0, 1.5),
                                         asp_test::grid_1d(257, 3.0)};
   for (const auto &grid : grids) {
     asp::SelfAffineParameters p;

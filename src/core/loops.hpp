@@ -1,0 +1,78 @@
+// The element-wise loops of the library: for-each and reductions over the pixels (or spectral
+// entries) this process owns. Every kernel is a lambda handed to one of these helpers, so
+// that vectorisation, threads and a distributed grid are decided here and not in each
+// solver. Sums and maxima over the local entries are combined across the grid's parts by its
+// Reductions (the identity on one process).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <limits>
+
+#include "core/reductions.hpp"
+
+namespace asp {
+namespace loops {
+
+// body(i) for i in [0, n).
+template <class Body>
+void for_each(std::int64_t n, Body &&body) {
+#pragma omp simd
+  for (std::int64_t i = 0; i < n; ++i) body(i);
+}
+
+// The sum of value(i) over all entries.
+template <class Value>
+double sum(const Reductions &reductions, std::int64_t n, Value &&value) {
+  double total = 0.0;
+#pragma omp simd reduction(+ : total)
+  for (std::int64_t i = 0; i < n; ++i) total += value(i);
+  reductions.combine_sums(&total, 1);
+  return total;
+}
+
+// The largest value(i) over all entries (-infinity for none; NaN may be dropped).
+template <class Value>
+double maximum(const Reductions &reductions, std::int64_t n, Value &&value) {
+  double largest = -std::numeric_limits<double>::infinity();
+#pragma omp simd reduction(max : largest)
+  for (std::int64_t i = 0; i < n; ++i) {
+    const double v = value(i);
+    largest = v > largest ? v : largest;
+  }
+  reductions.combine_maxima(&largest, 1);
+  return largest;
+}
+
+// K sums at once: body(i, sum) adds entry i's terms to sum[0..K-1].
+template <int K, class Body>
+std::array<double, K> sums(const Reductions &reductions, std::int64_t n, Body &&body) {
+  double sum[K] = {};
+#pragma omp simd reduction(+ : sum[:K])
+  for (std::int64_t i = 0; i < n; ++i) body(i, sum);
+  reductions.combine_sums(sum, K);
+  std::array<double, K> out;
+  for (int k = 0; k < K; ++k) out[k] = sum[k];
+  return out;
+}
+
+// K sums and one maximum: body(i, sum, max) adds to sum[0..K-1] and raises max. The maximum
+// of an empty range is -infinity. A NaN offered to the maximum may be dropped (comparisons
+// with NaN are false), so kernels that must notice NaN also add the value to a sum.
+template <int K, class Body>
+std::array<double, K + 1> sums_and_max(const Reductions &reductions, std::int64_t n,
+                                       Body &&body) {
+  double sum[K] = {};
+  double max = -std::numeric_limits<double>::infinity();
+#pragma omp simd reduction(+ : sum[:K]) reduction(max : max)
+  for (std::int64_t i = 0; i < n; ++i) body(i, sum, max);
+  reductions.combine_sums(sum, K);
+  reductions.combine_maxima(&max, 1);
+  std::array<double, K + 1> out;
+  for (int k = 0; k < K; ++k) out[k] = sum[k];
+  out[K] = max;
+  return out;
+}
+
+}  // namespace loops
+}  // namespace asp

@@ -1,0 +1,15 @@
+#include "core/spectral_layout.hpp"
+
+namespace asp {
+
+SpectralLayout::SpectralLayout(Packing packing, std::int64_t nx, std::int64_t ny, double lx,
+                               double ly)
+    : packing_(packing),
+      nx_(nx),
+      ny_(ny),
+      lx_(lx),
+      ly_(ly),
+      row_length_(packing == Packing::half_spectrum ? nx / 2 + 1 : nx),
+      second_single_(nx % 2 == 0 && nx > 1 ? nx / 2 : 0) {}
+
+}  // namespace asp

@@ -1,0 +1,309 @@
+#include "solvers/dual_formulation.hpp"
+
+#include <cfloat>
+#include <cmath>
+
+#include "core/checks.hpp"
+#include "core/error.hpp"
+#include "core/loops.hpp"
+
+namespace asp {
+
+namespace {
+// Scaled numbers beyond this would leave too little room for sums of squares over a grid.
+constexpr double largest_scaled = 1e100;
+
+bool representable(double v) { return std::isfinite(v) && std::fabs(v) <= DBL_MAX / 16; }
+bool normal(double v) { return std::isfinite(v) && v >= DBL_MIN; }
+}  // namespace
+
+DualFormulation::DualFormulation(System &system, Control control, double value)
+    : system_(system),
+      substrate_(system.substrate()),
+      grid_(system.grid()),
+      state_(system.state()),
+      heights_(system.heights().data()),
+      max_height_(system.max_height()),
+      control_(control),
+      n_(system.grid().n_pixels()),
+      compliance_(system.substrate().normalised_compliance()) {
+  const bool load = control == Control::mean_pressure;
+  const double k = substrate_.pixel_stiffness();
+  const double control_scale = load ? std::fabs(value) : substrate_.k0() * std::fabs(value);
+  pressure_unit_ = system.reference_pressure(std::isfinite(control_scale) ? control_scale : 0.0);
+  length_unit_ = pressure_unit_ / k;
+  energy_unit_ = grid_.pixel_area() * pressure_unit_ * length_unit_;
+  target_ = load ? value / pressure_unit_ : value / length_unit_;
+  compliance_factor_ = k;
+  const double n = static_cast<double>(n_);
+
+  // The scene in these units, and what its results will need in physical units.
+  const double range = system.height_range() / length_unit_;
+  const double extent = 1.0 + std::fabs(target_) + range;
+  if (!normal(pressure_unit_) || !normal(length_unit_))
+    throw Error(Status::invalid_argument,
+                "the scene's pressure scale " + format_number(pressure_unit_) +
+                    " or length scale " + format_number(length_unit_) +
+                    " is not a normal double; rescale the modulus or the heights");
+  if (!(std::fabs(target_) <= largest_scaled))
+    throw Error(Status::invalid_argument,
+                "argument 'value' is " + format_number(value) + ", " +
+                    format_number(std::fabs(target_)) + " times the scene's " +
+                    (load ? "pressure" : "length") + " scale " +
+                    format_number(load ? pressure_unit_ : length_unit_) +
+                    "; such a solve cannot be represented in doubles");
+  if (!(range <= largest_scaled) || !representable(pressure_unit_ * n * extent) ||
+      !representable(length_unit_ * n * extent) ||
+      !representable(energy_unit_ * n * extent * extent))
+    throw Error(Status::invalid_argument,
+                "argument 'value' is " + format_number(value) +
+                    ": with heights spanning " + format_number(system.height_range()) +
+                    " the pressures, gaps or energies of this solve would overflow a double; "
+                    "rescale the units");
+
+  // Work arrays before anything changes, so that running out of memory changes nothing.
+  direction_ = grid_.make_field();
+  spectrum_ = substrate_.make_spectrum();
+  height_spectrum_ = substrate_.make_spectrum();
+  // The direction's array holds the scaled heights for their transform, then starts at 0.
+  double *w = direction_.data();
+  loops::for_each(n_, [&](std::int64_t i) { w[i] = scaled_height(i) / n; });
+  substrate_.forward(w, height_spectrum_.data());
+  loops::for_each(n_, [&](std::int64_t i) { w[i] = 0.0; });
+  counters_.transforms += 1;
+}
+
+// ---- Formulation --------------------------------------------------------------------------
+
+void DualFormulation::gap_of(const double *pressure, double pressure_scale, double *gap) {
+  // gap = backward(scale k C forward(p) - H) - delta: the scaled gap in one transform pair and
+  // one pass over the spectrum (H, the spectrum of the scaled heights, carries the 1/N).
+  substrate_.forward(pressure, spectrum_.data());
+  Complex *s = spectrum_.data();
+  const Complex *hs = height_spectrum_.data();
+  const double *c = compliance_.data();
+  const double factor = pressure_scale * compliance_factor_;
+  loops::for_each(static_cast<std::int64_t>(spectrum_.size()),
+                  [&](std::int64_t k) { s[k] = factor * c[k] * s[k] - hs[k]; });
+  s[0] -= delta_;  // a constant in every pixel after the unnormalised backward transform
+  substrate_.backward(spectrum_.data(), gap);
+  counters_.transforms += 2;
+  counters_.evaluations += 1;
+}
+
+double DualFormulation::value_and_gradient(const double *x, double *gradient) {
+  // Pi = sum x (u/2 - w - delta), gradient g = u - w - delta with u = K^-1 x (scaled).
+  gap_of(x, 1.0, gradient);
+  return loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
+    const double u = gradient[i] + scaled_height(i) + delta_;
+    return x[i] * (0.5 * u - scaled_height(i) - delta_);
+  });
+}
+
+void DualFormulation::hessian_product(const double *direction, double *product) {
+  substrate_.forward(direction, spectrum_.data());
+  Complex *s = spectrum_.data();
+  const double *c = compliance_.data();
+  loops::for_each(static_cast<std::int64_t>(spectrum_.size()),
+                  [&](std::int64_t k) { s[k] *= compliance_factor_ * c[k]; });
+  substrate_.backward(spectrum_.data(), product);
+  counters_.transforms += 2;
+}
+
+double DualFormulation::dot(const double *a, const double *b) const {
+  return loops::sum(grid_.reductions(), n_, [&](std::int64_t i) { return a[i] * b[i]; });
+}
+
+double DualFormulation::error(const double *x, const double *gradient) const {
+  // Under load control the penetration is the multiplier of the mean: the gradient counts
+  // relative to its mean over the contact set.
+  double shift = 0.0;
+  if (control_ == Control::mean_pressure) {
+    const auto sums = loops::sums<2>(grid_.reductions(), n_, [&](std::int64_t i, double *s) {
+      const double in = x[i] > 0.0 ? 1.0 : 0.0;
+      s[0] += in * gradient[i];
+      s[1] += in;
+    });
+    shift = sums[1] > 0.0 ? sums[0] / sums[1] : 0.0;
+  }
+  return loops::maximum(grid_.reductions(), n_, [&](std::int64_t i) {
+    const double g = gradient[i] - shift;
+    return x[i] > 0.0 ? std::fabs(g) : -g;
+  });
+}
+
+// ---- Polonsky & Keer's steps --------------------------------------------------------------
+
+void DualFormulation::begin() {
+  double *p = state_.pressure.data();
+  const double inverse_unit = 1.0 / pressure_unit_;
+  const double n = static_cast<double>(n_);
+  // Negative pressures cannot stand against a hard wall; NaN is kept so that the monitor sees
+  // it (std::fmax would drop it).
+  const double sum = loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
+    p[i] = (p[i] < 0.0 ? 0.0 : p[i]) * inverse_unit;
+    return p[i] / n;
+  });
+  scale_ = 1.0;
+  shift_ = 0.0;
+  delta_ = state_.penetration / length_unit_;
+  if (control_ == Control::mean_pressure) {
+    // Zero load: the body just touches the highest point, so the penetration starts (and
+    // ends) at 0.
+    if (target_ == 0.0) delta_ = 0.0;
+    if (target_ == 0.0 || !(sum > 0.0)) {
+      if (std::isnan(sum)) return;  // leave the NaN for the monitor to see
+      loops::for_each(n_, [&](std::int64_t i) { p[i] = target_; });
+    } else {
+      scale_ = target_ / sum;
+    }
+  } else {
+    delta_ = target_;
+  }
+}
+
+DualFormulation::Gap DualFormulation::evaluate_gap(bool with_objective) {
+  double *g = state_.gap.data();
+  const double *p = state_.pressure.data();
+  const double delta_before = delta_;
+  gap_of(p, scale_, g);
+
+  // Sums over the contact set I_c = {p > 0}, and those of the objective if asked for.
+  const auto s = loops::sums<3>(grid_.reductions(), n_, [&](std::int64_t i, double *sum) {
+    const double in = p[i] > 0.0 ? 1.0 : 0.0;
+    const double gi = in * g[i];
+    sum[0] += gi;
+    sum[1] += gi * gi;
+    sum[2] += in;
+  });
+  const double contacts = s[2];
+  contacts_ = contacts;
+  // Under load control the penetration is whatever closes the mean gap on I_c.
+  shift_ = control_ == Control::mean_pressure && contacts > 0.0 ? s[0] / contacts : 0.0;
+  delta_ += shift_;
+  Gap gap;
+  gap.norm = std::fmax(s[1] - 2.0 * shift_ * s[0] + contacts * shift_ * shift_, 0.0);
+  gap.contacts = contacts;
+  gap.objective = 0.0;
+  if (with_objective) {
+    // Pi = sum p (u/2 - w - delta) with u = g_arrays + w + delta_before (before centring).
+    const auto o = loops::sums<3>(grid_.reductions(), n_, [&](std::int64_t i, double *sum) {
+      sum[0] += p[i] * g[i];
+      sum[1] += p[i] * scaled_height(i);
+      sum[2] += p[i];
+    });
+    gap.objective =
+        scale_ * (0.5 * o[0] - 0.5 * o[1] + (0.5 * delta_before - delta_) * o[2]);
+  }
+  return gap;
+}
+
+double DualFormulation::update_direction(double beta) {
+  double *t = direction_.data();
+  const double *g = state_.gap.data();
+  const double *p = state_.pressure.data();
+  const double shift = shift_;
+  // The old direction made mean-free on the current contact set (load control), so that a
+  // step along t keeps the mean pressure and the step length needs no centred product.
+  const double t_mean = control_ == Control::mean_pressure && contacts_ > 0.0
+                            ? direction_sum_on_contact_ / contacts_
+                            : 0.0;
+  // Projected gradient (the error) and the new search direction in one branch-free pass, so
+  // that it vectorises. The violations are also summed, only to notice NaN, which a maximum
+  // may drop.
+  const auto r = loops::sums_and_max<2>(
+      grid_.reductions(), n_, [&](std::int64_t i, double *sum, double &max) {
+        const double gi = g[i] - shift;
+        const bool in = p[i] > 0.0;
+        const double ti = in ? gi + beta * (t[i] - t_mean) : 0.0;
+        t[i] = ti;
+        const double v = in ? std::fabs(gi) : -gi;
+        max = max > v ? max : v;
+        sum[0] += gi * ti;
+        sum[1] += v;
+      });
+  descent_ = r[0];
+  return std::isfinite(r[1]) ? r[2] : r[1];
+}
+
+double DualFormulation::curvature() {
+  // t.K^-1 t = (1/N) sum_q weight C'|T_q|^2 by Parseval, C' = k C the scaled compliance with
+  // the 1/N of the transform already in it.
+  substrate_.forward(direction_.data(), spectrum_.data());
+  counters_.transforms += 1;
+  const Complex *s = spectrum_.data();
+  const double *c = compliance_.data();
+  double sum = substrate_.layout().weighted_sum(
+      [&](std::int64_t k) { return c[k] * std::norm(s[k]); });
+  grid_.reductions().combine_sums(&sum, 1);
+  return compliance_factor_ * sum;
+}
+
+bool DualFormulation::step(double tau) {
+  double *p = state_.pressure.data();
+  const double *g = state_.gap.data();
+  const double *t = direction_.data();
+  const double shift = shift_, scale = scale_;
+  // Step, project onto p >= 0, and let pixels with a negative gap enter the contact set.
+  const auto s = loops::sums<3>(grid_.reductions(), n_, [&](std::int64_t i, double *sum) {
+    const double gi = g[i] - shift;
+    const double old_p = scale * p[i];
+    const double stepped = old_p - tau * t[i];
+    double pi = old_p > 0.0 ? stepped : 0.0;
+    pi = pi > 0.0 ? pi : 0.0;
+    const bool enters = (pi == 0.0) & (gi < 0.0);
+    pi = enters ? -tau * gi : pi;
+    sum[0] += pi;
+    sum[1] += enters ? 1.0 : 0.0;
+    sum[2] += pi > 0.0 ? t[i] : 0.0;
+    p[i] = pi;
+  });
+  direction_sum_on_contact_ = s[2];
+  scale_ = 1.0;
+  bool entered = s[1] > 0.0;
+  if (control_ == Control::mean_pressure) {
+    const double n = static_cast<double>(n_);
+    if (s[0] > 0.0) {
+      scale_ = target_ * n / s[0];
+    } else {
+      loops::for_each(n_, [&](std::int64_t i) { p[i] = target_; });
+      entered = true;
+    }
+  }
+  return entered;
+}
+
+void DualFormulation::admit_interpenetrating_pixels() {
+  double *p = state_.pressure.data();
+  const double *g = state_.gap.data();
+  const double shift = shift_, scale = scale_;
+  // The scaled pixel stiffness is 1: pressure -g closes a lone pixel's gap g < 0.
+  const double sum = loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
+    const double gi = g[i] - shift;
+    const double old_p = scale * p[i];
+    p[i] = old_p > 0.0 ? old_p : (gi < 0.0 ? -gi : 0.0);
+    return p[i];
+  });
+  scale_ = 1.0;
+  if (control_ == Control::mean_pressure && sum > 0.0)
+    scale_ = target_ * static_cast<double>(n_) / sum;
+  direction_sum_on_contact_ = 0.0;
+}
+
+bool DualFormulation::finish() {
+  // The arrays hold p/scale and g + shift (scaled): turn them into the physical state.
+  double *p = state_.pressure.data();
+  double *g = state_.gap.data();
+  const double pressure_factor = scale_ * pressure_unit_;
+  const double shift = shift_, length = length_unit_;
+  const double check = loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
+    p[i] *= pressure_factor;
+    g[i] = (g[i] - shift) * length;
+    return 0.0 * (p[i] + g[i]);  // NaN if anything overflowed
+  });
+  state_.penetration = delta_ * length;
+  system_.remember_reference_pressure(pressure_unit_);
+  return check == 0.0 && std::isfinite(state_.penetration);
+}
+
+}  // namespace asp

@@ -1,0 +1,109 @@
+// The dual (pressure) formulation of the non-adhesive hard-wall contact (thesis section
+// 3.1.1): minimise the complementary energy
+//     Pi(p) = (a/2) p.K^-1 p - a p.(h - max h + delta)   over p >= 0,
+// whose gradient is a times the gap g = K^-1 p - (h - max h) - delta. Under mean-pressure
+// control the mean of p is fixed and the penetration delta is the Lagrange multiplier of that
+// constraint; under penetration control delta is given. At the optimum Pi = -(a/2) p.K^-1 p,
+// minus the elastic energy including the q = 0 term.
+//
+// Units: pressures are divided by the reference pressure P and lengths by P/k, k the pixel
+// stiffness, so that the scaled pixel stiffness is 1 and the error is simply the largest
+// projected gap violation. The constructor refuses scenes whose scaled numbers or whose results
+// doubles cannot hold.
+//
+// Besides the generic Formulation interface it offers the steps of Polonsky & Keer's
+// algorithm, fused into as few passes over memory as the algorithm allows; during such a solve
+// the system's pressure and gap arrays hold the scaled iterate.
+#pragma once
+
+#include "physics/system.hpp"
+#include "solvers/control.hpp"
+#include "solvers/formulation.hpp"
+
+namespace asp {
+
+class DualFormulation final : public Formulation {
+ public:
+  // Checks that the scene and the target can be represented (throws Error naming the
+  // argument) and allocates the work arrays; the system's state is not touched yet.
+  DualFormulation(System &system, Control control, double value);
+
+  // ---- Formulation
+  std::int64_t size() const override { return n_; }
+  Field &variable() override { return state_.pressure; }
+  double value_and_gradient(const double *x, double *gradient) override;
+  void hessian_product(const double *direction, double *product) override;
+  double dot(const double *a, const double *b) const override;
+  double lower_bound() const override { return 0.0; }
+  double error(const double *x, const double *gradient) const override;
+
+  // Converts scaled objective values to the physical energy (per unit length in 1D).
+  double energy_unit() const { return energy_unit_; }
+
+  // ---- Polonsky & Keer's steps
+  // Loads the system's state as the starting iterate: the stored pressure (negative values
+  // clipped), rescaled to the target mean under load control (uniform if there is none).
+  void begin();
+
+  struct Gap {
+    double norm;       // sum over the contact set of (g - mean)^2 (load) or g^2 (penetration)
+    double contacts;   // number of pixels with p > 0
+    double objective;  // Pi, scaled, when asked for (else 0)
+  };
+  // The gap of the current pressure (one transform pair). Under load control the penetration
+  // becomes the one that closes the mean gap over the contact set.
+  Gap evaluate_gap(bool with_objective);
+
+  // The new search direction t = g + beta t_old on the contact set (0 elsewhere), with t_old
+  // made mean-free there under load control. Returns the error of the current iterate.
+  double update_direction(double beta);
+  // g.t, the descent of the energy along t.
+  double descent() const { return descent_; }
+  // t.K^-1 t, the curvature of the energy along t (one forward transform, by Parseval).
+  double curvature();
+  // p <- max(p - tau t, 0) on the contact set; pixels outside it with a negative gap enter
+  // with pressure -tau g. Under load control the result is rescaled to the target mean.
+  // Returns true if pixels entered the contact set.
+  bool step(double tau);
+  // When the direction vanishes (no contact, or a gap already uniform on the contact set)
+  // but pixels interpenetrate: each such pixel gets the pressure that closes its own gap if
+  // it were alone, k (-g).
+  void admit_interpenetrating_pixels();
+
+  bool finish() override;
+
+ private:
+  double scaled_height(std::int64_t i) const { return (heights_[i] - max_height_) / length_unit_; }
+  void gap_of(const double *pressure, double pressure_scale, double *gap);
+
+  System &system_;
+  const Substrate &substrate_;
+  const Grid &grid_;
+  ContactState &state_;
+  const double *heights_;
+  double max_height_;
+  Control control_;
+  std::int64_t n_;
+
+  double pressure_unit_;  // P
+  double length_unit_;    // P/k
+  double energy_unit_;    // a P^2/k
+  double target_;         // scaled mean pressure or penetration
+  double compliance_factor_;  // k: turns the substrate's K^-1 into the scaled one
+
+  Field direction_;         // t
+  Spectrum spectrum_;       // work
+  Spectrum height_spectrum_;  // FFT of the scaled (h - max h), divided by N
+  const Field &compliance_;
+
+  // The arrays hold p/scale and g + shift: rescaling and centring are carried as numbers and
+  // folded into the next pass over the data.
+  double scale_ = 1.0;
+  double shift_ = 0.0;
+  double delta_ = 0.0;            // scaled penetration
+  double contacts_ = 0.0;         // pixels in the contact set at the last evaluation
+  double descent_ = 0.0;
+  double direction_sum_on_contact_ = 0.0;  // sum of t over the contact set after a step
+};
+
+}  // namespace asp

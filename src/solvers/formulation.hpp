@@ -1,0 +1,55 @@
+// A formulation is what a solver sees instead of the physics: a vector of unknowns, an
+// objective with its gradient and Hessian product, bounds, the error measure, the inner
+// product, and the way back into the system's state. Primal (gap), dual (pressure),
+// unconstrained (displacement) and Fourier-preconditioned formulations implement it; a solver
+// never sees the substrate, the interaction or the heights.
+//
+// Formulations work in the dimensionless units of their scene (pressures divided by the
+// reference pressure, lengths by the reference pressure over the pixel stiffness), so that a
+// scene and the same scene in other units take the same arithmetic path, and nothing
+// overflows for any scene the constructor accepts.
+#pragma once
+
+#include <cstdint>
+
+#include "core/aligned_field.hpp"
+
+namespace asp {
+
+// Work done so far, for the monitor's history.
+struct Counters {
+  std::int64_t evaluations = 0;  // objective or gradient evaluations
+  std::int64_t transforms = 0;   // forward or backward FFTs
+};
+
+class Formulation {
+ public:
+  virtual ~Formulation() = default;
+
+  // Number of unknowns and the current iterate.
+  virtual std::int64_t size() const = 0;
+  virtual Field &variable() = 0;
+
+  // The objective at x and its gradient (in the inner product below).
+  virtual double value_and_gradient(const double *x, double *gradient) = 0;
+  // The Hessian times a direction.
+  virtual void hessian_product(const double *direction, double *product) = 0;
+  // The inner product of the variable's space (weighted for packed spectra).
+  virtual double dot(const double *a, const double *b) const = 0;
+  // Bound constraints x >= lower_bound() on every unknown (-infinity: none).
+  virtual double lower_bound() const = 0;
+  // The error measure of DESIGN.md section 2 at x with this gradient: the largest projected
+  // force-balance residual, divided by the reference pressure.
+  virtual double error(const double *x, const double *gradient) const = 0;
+
+  // Writes the iterate back into the system's state in physical units. Returns false if a
+  // physical value is not finite (the caller then resets the state).
+  virtual bool finish() = 0;
+
+  const Counters &counters() const { return counters_; }
+
+ protected:
+  Counters counters_;
+};
+
+}  // namespace asp

@@ -1,0 +1,67 @@
+#include "solvers/monitor.hpp"
+
+#include <cmath>
+
+namespace asp {
+
+const char *termination_name(Termination termination) {
+  switch (termination) {
+    case Termination::converged: return "converged";
+    case Termination::iteration_limit: return "iteration limit";
+    case Termination::cancelled: return "cancelled";
+    case Termination::stalled: return "stalled";
+    case Termination::breakdown: return "numerical breakdown";
+  }
+  return "unknown";
+}
+
+Monitor::Monitor(const MonitorSettings &settings)
+    : settings_(settings), start_(std::chrono::steady_clock::now()) {}
+
+double Monitor::seconds() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
+bool Monitor::should_stop(std::int64_t iteration, const IterationState &state) {
+  iterations_ = iteration;
+  if (!std::isfinite(state.error) ||
+      (settings_.record_history && !std::isfinite(state.objective))) {
+    termination_ = Termination::breakdown;
+    return true;
+  }
+  error_ = state.error;
+
+  const bool timed = settings_.record_history || settings_.progress != nullptr;
+  const double elapsed = timed ? seconds() : 0.0;
+  if (settings_.record_history)
+    history_.push_back({static_cast<double>(iteration), static_cast<double>(state.evaluations),
+                        static_cast<double>(state.transforms), elapsed, state.error,
+                        state.objective, state.contact_fraction});
+  const bool cancel = settings_.progress != nullptr &&
+                      settings_.progress(iteration, elapsed, state.error,
+                                         settings_.progress_data) != 0;
+
+  // A state that met the tolerance is converged even if the callback also asked to stop.
+  if (state.error <= settings_.tolerance) {
+    termination_ = Termination::converged;
+    return true;
+  }
+  if (cancel) {
+    termination_ = Termination::cancelled;
+    return true;
+  }
+  if (iteration >= settings_.max_iterations) {
+    termination_ = Termination::iteration_limit;
+    return true;
+  }
+  if (iteration == 0 || state.error < 0.99 * stall_reference_) {
+    stall_reference_ = state.error;
+    stall_since_ = iteration;
+  } else if (settings_.stall_window > 0 && iteration - stall_since_ >= settings_.stall_window) {
+    termination_ = Termination::stalled;
+    return true;
+  }
+  return false;
+}
+
+}  // namespace asp

@@ -1,0 +1,86 @@
+// The monitor watches every solve the same way, whatever the algorithm: it compares the error
+// with the tolerance, counts iterations, guards against non-finite numbers, detects stalls,
+// calls the user's progress callback, records the history when asked, and says why the solve
+// ended. A solver asks it once per iteration whether to stop.
+#pragma once
+
+#include <array>
+#include <chrono>
+#include <cstdint>
+#include <vector>
+
+namespace asp {
+
+enum class Termination { converged, iteration_limit, cancelled, stalled, breakdown };
+const char *termination_name(Termination termination);
+
+// The C signature of asp_progress_fn: non-zero return cancels.
+using ProgressFunction = int (*)(std::int64_t iteration, double seconds, double error,
+                                 void *user_data);
+
+struct MonitorSettings {
+  double tolerance = 1e-8;
+  std::int64_t max_iterations = 10000;
+  // Stalled: the smallest error seen has not fallen below 99 % of itself within this many
+  // iterations (0: never).
+  std::int64_t stall_window = 1000;
+  bool record_history = false;
+  ProgressFunction progress = nullptr;
+  void *progress_data = nullptr;
+};
+
+// What an iteration reached, as the solver knows it.
+struct IterationState {
+  double error = 0.0;
+  double objective = 0.0;  // only read when the monitor wants it
+  double contact_fraction = 0.0;
+  std::int64_t evaluations = 0;
+  std::int64_t transforms = 0;
+};
+
+// One row per iteration; columns in the order of the ASP_HISTORY_* constants.
+enum class HistoryColumn {
+  iteration,
+  evaluations,
+  transforms,
+  seconds,
+  error,
+  objective,
+  contact_fraction,
+};
+constexpr int history_columns = 7;
+using History = std::vector<std::array<double, history_columns>>;
+
+class Monitor {
+ public:
+  explicit Monitor(const MonitorSettings &settings);
+
+  // Whether the solver should compute its objective (only the history records it).
+  bool wants_objective() const { return settings_.record_history; }
+
+  // Iteration `iteration` (0: the starting point) has reached `state`. Returns true when the
+  // solve must stop now; termination() then says why.
+  bool should_stop(std::int64_t iteration, const IterationState &state);
+
+  // The solver found a non-finite value the monitor could not see (e.g. in physical units).
+  void declare_breakdown() { termination_ = Termination::breakdown; }
+
+  Termination termination() const { return termination_; }
+  std::int64_t iterations() const { return iterations_; }
+  // The error of the last iteration with a finite one.
+  double error() const { return error_; }
+  double seconds() const;
+  History &history() { return history_; }
+
+ private:
+  MonitorSettings settings_;
+  std::chrono::steady_clock::time_point start_;
+  Termination termination_ = Termination::iteration_limit;
+  std::int64_t iterations_ = 0;
+  double error_ = 0.0;
+  double stall_reference_ = 0.0;  // the error the next iterations must beat by 1 %
+  std::int64_t stall_since_ = 0;  // iteration at which stall_reference_ was set
+  History history_;
+};
+
+}  // namespace asp

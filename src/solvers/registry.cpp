@@ -1,0 +1,117 @@
+#include "solvers/registry.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "core/error.hpp"
+#include "solvers/polonsky_keer.hpp"
+
+namespace asp {
+
+const char *control_name(Control control) {
+  switch (control) {
+    case Control::mean_pressure: return "mean_pressure";
+    case Control::penetration: return "penetration";
+    case Control::mean_gap: return "mean_gap";
+  }
+  return "unknown";
+}
+
+namespace {
+
+// What every algorithm offers: the monitor's settings.
+std::vector<OptionSpec> common_options() {
+  const double largest_count = 9.2e18;  // below INT64_MAX, exactly representable
+  return {
+      {"tolerance", OptionType::real, 1e-8, 0.0, 1e300, true, {},
+       "stop when the error falls to it"},
+      {"max_iterations", OptionType::integer, 10000, 1, largest_count, false, {},
+       "stop after this many iterations"},
+      {"stall_window", OptionType::integer, 1000, 0, largest_count, false, {},
+       "stop as stalled when the smallest error has not fallen by 1 % within this many "
+       "iterations (0: never)"},
+  };
+}
+
+AlgorithmSpec with_common_options(AlgorithmSpec spec) {
+  std::vector<OptionSpec> options = common_options();
+  options.insert(options.end(), spec.options.begin(), spec.options.end());
+  spec.options = std::move(options);
+  return spec;
+}
+
+template <class T, class Name>
+std::string names(const std::vector<T> &items, Name name) {
+  std::string out;
+  for (const T &item : items) out += (out.empty() ? "" : ", ") + std::string(name(item));
+  return out;
+}
+
+std::string number_text(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", v);
+  return buffer;
+}
+
+}  // namespace
+
+const std::vector<AlgorithmSpec> &algorithms() {
+  static const std::vector<AlgorithmSpec> all = {with_common_options(polonsky_keer_algorithm())};
+  return all;
+}
+
+const AlgorithmSpec &find_algorithm(const std::string &name) {
+  for (const AlgorithmSpec &a : algorithms())
+    if (a.name == name) return a;
+  throw Error(Status::unsupported,
+              "argument 'algorithm': unknown algorithm '" + name + "' (available: " +
+                  names(algorithms(), [](const AlgorithmSpec &a) { return a.name.c_str(); }) +
+                  ")");
+}
+
+void check_request(const AlgorithmSpec &algorithm, const System &system, Control control) {
+  const auto &c = algorithm.controls;
+  if (std::find(c.begin(), c.end(), control) == c.end())
+    throw Error(Status::unsupported, "solver '" + algorithm.name + "' does not offer " +
+                                         control_name(control) + " control (it offers: " +
+                                         names(c, control_name) + ")");
+  const auto &s = algorithm.substrates;
+  if (std::find(s.begin(), s.end(), system.substrate().kind()) == s.end())
+    throw Error(Status::unsupported, "solver '" + algorithm.name + "' does not work on a " +
+                                         substrate_name(system.substrate().kind()) +
+                                         " (it works on: " + names(s, substrate_name) + ")");
+  const auto &i = algorithm.interactions;
+  if (std::find(i.begin(), i.end(), system.interaction().kind()) == i.end())
+    throw Error(Status::unsupported,
+                "solver '" + algorithm.name + "' does not handle a " +
+                    interaction_name(system.interaction().kind()) +
+                    " (it handles: " + names(i, interaction_name) + ")");
+}
+
+std::string describe(const AlgorithmSpec &algorithm) {
+  std::string text = algorithm.name + ": " + algorithm.summary + "\n";
+  text += "controls: " + names(algorithm.controls, control_name) + "\n";
+  text += "substrates: " + names(algorithm.substrates, substrate_name) + "\n";
+  text += "interactions: " + names(algorithm.interactions, interaction_name) + "\n";
+  text += "options:\n";
+  for (const OptionSpec &o : algorithm.options) {
+    text += "  " + o.name;
+    switch (o.type) {
+      case OptionType::real:
+      case OptionType::integer:
+        text += std::string(o.type == OptionType::real ? " (real" : " (integer") +
+                ", default " + number_text(o.default_value) + ", range " +
+                (o.minimum_excluded ? "(" : "[") + number_text(o.minimum) + ", " +
+                number_text(o.maximum) + "])";
+        break;
+      case OptionType::choice:
+        text += " (one of " + names(o.choices, [](const std::string &c) { return c.c_str(); }) +
+                "; default " + o.choices.front() + ")";
+        break;
+    }
+    text += ": " + o.meaning + "\n";
+  }
+  return text;
+}
+
+}  // namespace asp

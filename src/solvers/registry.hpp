@@ -1,0 +1,59 @@
+// The registry of algorithms: each one's name, what it serves (controls, substrates,
+// interactions), its options with defaults and ranges, and how to run it. Requests an
+// algorithm cannot serve are refused here, the same way for every algorithm, before a solve
+// touches the system.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "physics/system.hpp"
+#include "solvers/control.hpp"
+#include "solvers/monitor.hpp"
+
+namespace asp {
+
+enum class OptionType { real, integer, choice };
+
+struct OptionSpec {
+  std::string name;
+  OptionType type;
+  double default_value = 0.0;  // real and integer options
+  double minimum = 0.0;
+  double maximum = 0.0;
+  bool minimum_excluded = false;              // (minimum, maximum] instead of [minimum, maximum]
+  std::vector<std::string> choices;           // choice options; the first is the default
+  std::string meaning;
+};
+
+// Option values by name: numbers for real and integer options, texts for choices.
+struct OptionValues {
+  std::map<std::string, double> numbers;
+  std::map<std::string, std::string> texts;
+  double number(const std::string &name) const { return numbers.at(name); }
+  const std::string &text(const std::string &name) const { return texts.at(name); }
+};
+
+struct AlgorithmSpec {
+  std::string name;
+  std::string summary;
+  std::vector<Control> controls;
+  std::vector<SubstrateKind> substrates;
+  std::vector<InteractionKind> interactions;
+  std::vector<OptionSpec> options;  // every option, the common ones first
+  // Runs the algorithm from the system's state and leaves its result there (see conclude()).
+  void (*run)(System &system, Control control, double value, const OptionValues &options,
+              Monitor &monitor);
+};
+
+// Every algorithm of this build, in a fixed order.
+const std::vector<AlgorithmSpec> &algorithms();
+// Throws Error(unsupported) naming the known algorithms if there is no such algorithm.
+const AlgorithmSpec &find_algorithm(const std::string &name);
+// Throws Error(unsupported) with a message naming what the algorithm does not serve.
+void check_request(const AlgorithmSpec &algorithm, const System &system, Control control);
+// The algorithm, what it serves and its options, as text (asp_solver_describe).
+std::string describe(const AlgorithmSpec &algorithm);
+
+}  // namespace asp
