@@ -10,6 +10,10 @@
 namespace asp {
 
 namespace {
+// Linear updates of the pressure's spectrum between two transforms of it (see
+// gap_of_iterate): rounding grows with their number, a transform costs 1/3 of an iteration.
+constexpr int linear_updates_between_transforms = 32;
+
 // Scaled numbers beyond this would leave too little room for sums of squares over a grid.
 constexpr double largest_scaled = 1e100;
 
@@ -64,6 +68,7 @@ DualFormulation::DualFormulation(System &system, Control control, double value)
   // Work arrays before anything changes, so that running out of memory changes nothing.
   direction_ = grid_.make_field();
   spectrum_ = substrate_.make_spectrum();
+  pressure_spectrum_ = substrate_.make_spectrum();
   height_spectrum_ = substrate_.make_spectrum();
   // The direction's array holds the scaled heights for their transform, then starts at 0.
   double *w = direction_.data();
@@ -89,6 +94,35 @@ void DualFormulation::gap_of(const double *pressure, double pressure_scale, doub
   substrate_.backward(spectrum_.data(), gap);
   counters_.transforms += 2;
   counters_.evaluations += 1;
+}
+
+void DualFormulation::gap_of_iterate(double *gap) {
+  // The spectrum of the pressure array: after a step that moved no pixel onto or off the
+  // contact set, p_new = scale_old p_old - tau t exactly, so its spectrum follows from the
+  // old one and that of t (still in spectrum_ from the curvature) without a transform. Every
+  // few such steps it is recomputed, so that rounding cannot accumulate.
+  Complex *ps = pressure_spectrum_.data();
+  const auto m = static_cast<std::int64_t>(spectrum_.size());
+  if (linear_update_ready_) {
+    const Complex *ts = spectrum_.data();
+    const double a = step_scale_, b = step_length_;
+    loops::for_each(m, [&](std::int64_t k) { ps[k] = a * ps[k] - b * ts[k]; });
+    ++linear_updates_;
+  } else {
+    substrate_.forward(state_.pressure.data(), ps);
+    counters_.transforms += 1;
+    linear_updates_ = 0;
+  }
+  Complex *s = spectrum_.data();
+  const Complex *hs = height_spectrum_.data();
+  const double *c = compliance_.data();
+  const double factor = scale_ * compliance_factor_;
+  loops::for_each(m, [&](std::int64_t k) { s[k] = factor * c[k] * ps[k] - hs[k]; });
+  s[0] -= delta_;
+  substrate_.backward(spectrum_.data(), gap);
+  counters_.transforms += 1;
+  counters_.evaluations += 1;
+  linear_update_ready_ = false;
 }
 
 double DualFormulation::value_and_gradient(const double *x, double *gradient) {
@@ -166,7 +200,7 @@ DualFormulation::Gap DualFormulation::evaluate_gap(bool with_objective) {
   double *g = state_.gap.data();
   const double *p = state_.pressure.data();
   const double delta_before = delta_;
-  gap_of(p, scale_, g);
+  gap_of_iterate(g);
 
   // Sums over the contact set I_c = {p > 0}, and those of the objective if asked for.
   const auto s = loops::sums<3>(grid_.reductions(), n_, [&](std::int64_t i, double *sum) {
@@ -245,7 +279,9 @@ bool DualFormulation::step(double tau) {
   const double *t = direction_.data();
   const double shift = shift_, scale = scale_;
   // Step, project onto p >= 0, and let pixels with a negative gap enter the contact set.
-  const auto s = loops::sums<3>(grid_.reductions(), n_, [&](std::int64_t i, double *sum) {
+  // The last sum counts pixels whose new pressure is not the plain step (clipped or
+  // entered): when there are none, the pressure's spectrum can be updated linearly.
+  const auto s = loops::sums<4>(grid_.reductions(), n_, [&](std::int64_t i, double *sum) {
     const double gi = g[i] - shift;
     const double old_p = scale * p[i];
     const double stepped = old_p - tau * t[i];
@@ -256,9 +292,13 @@ bool DualFormulation::step(double tau) {
     sum[0] += pi;
     sum[1] += enters ? 1.0 : 0.0;
     sum[2] += pi > 0.0 ? t[i] : 0.0;
+    sum[3] += pi != stepped ? 1.0 : 0.0;
     p[i] = pi;
   });
   direction_sum_on_contact_ = s[2];
+  step_scale_ = scale;
+  step_length_ = tau;
+  linear_update_ready_ = s[3] == 0.0 && linear_updates_ < linear_updates_between_transforms;
   scale_ = 1.0;
   bool entered = s[1] > 0.0;
   if (control_ == Control::mean_pressure) {
@@ -268,6 +308,7 @@ bool DualFormulation::step(double tau) {
     } else {
       loops::for_each(n_, [&](std::int64_t i) { p[i] = target_; });
       entered = true;
+      linear_update_ready_ = false;
     }
   }
   return entered;
@@ -288,6 +329,7 @@ void DualFormulation::admit_interpenetrating_pixels() {
   if (control_ == Control::mean_pressure && sum > 0.0)
     scale_ = target_ * static_cast<double>(n_) / sum;
   direction_sum_on_contact_ = 0.0;
+  linear_update_ready_ = false;
 }
 
 bool DualFormulation::finish() {

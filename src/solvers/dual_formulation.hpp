@@ -75,6 +75,7 @@ class DualFormulation final : public Formulation {
  private:
   double scaled_height(std::int64_t i) const { return (heights_[i] - max_height_) / length_unit_; }
   void gap_of(const double *pressure, double pressure_scale, double *gap);
+  void gap_of_iterate(double *gap);
 
   System &system_;
   const Substrate &substrate_;
@@ -92,7 +93,8 @@ class DualFormulation final : public Formulation {
   double compliance_factor_;  // k: turns the substrate's K^-1 into the scaled one
 
   Field direction_;         // t
-  Spectrum spectrum_;       // work
+  Spectrum spectrum_;       // work; holds the spectrum of t between curvature() and the next gap
+  Spectrum pressure_spectrum_;  // the spectrum of the pressure array
   Spectrum height_spectrum_;  // FFT of the scaled (h - max h), divided by N
   const Field &compliance_;
 
@@ -104,6 +106,11 @@ class DualFormulation final : public Formulation {
   double contacts_ = 0.0;         // pixels in the contact set at the last evaluation
   double descent_ = 0.0;
   double direction_sum_on_contact_ = 0.0;  // sum of t over the contact set after a step
+  // The last step p <- step_scale p - step_length t, and whether it was that exactly.
+  double step_scale_ = 1.0;
+  double step_length_ = 0.0;
+  bool linear_update_ready_ = false;
+  int linear_updates_ = 0;
 };
 
 }  // namespace asp
