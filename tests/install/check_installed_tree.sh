@@ -1,21 +1,69 @@
 #!/usr/bin/env bash
-# usage: check_installed_tree.sh BUILD_DIR SOURCE_DIR WORK_DIR C_COMPILER [FORTRAN_COMPILER]
+# usage: check_installed_tree.sh BUILD_DIR SOURCE_DIR WORK_DIR C_COMPILER FORTRAN_COMPILER CLI
+#   FORTRAN_COMPILER  empty when the Fortran module was not built; its part is then skipped
+#   CLI               relocatable: bin/asperity must start on its own from any prefix
+#                     system: it was built for a system library directory, so has no RPATH
+#                     none: the command was not built
 set -euo pipefail
-build=$1 source=$2 work=$3 cc=$4 fc=${5:-}
+build=$1 source=$2 work=$3 cc=$4 fc=$5 cli=$6
 rm -rf "$work"
 mkdir -p "$work"
 prefix=$work/prefix
 
 cmake --install "$build" --prefix "$prefix" > "$work/install.log"
 pc_file=$(find "$prefix" -name asperity.pc | head -n 1)
-libdir=$(dirname "$(dirname "$pc_file")")
 [ -n "$pc_file" ] || { echo "asperity.pc was not installed"; exit 1; }
-export LD_LIBRARY_PATH=$libdir${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
+libdir=$(dirname "$(dirname "$pc_file")")
+libdir_in_prefix=${libdir#"$prefix"/}
+
+# run_installed_cli DIR: runs DIR/bin/asperity on a small scene without LD_LIBRARY_PATH and,
+# for a shared build, checks that libasperity is loaded from DIR and not from wherever else the
+# loader might find one.
+run_installed_cli() {
+  local dir=$1 loaded
+  env -u LD_LIBRARY_PATH "$dir/bin/asperity" --size 64
+  if compgen -G "$dir/$libdir_in_prefix/libasperity.so*" > /dev/null && command -v ldd > /dev/null
+  then
+    loaded=$(env -u LD_LIBRARY_PATH ldd "$dir/bin/asperity" | awk '$1 ~ /^libasperity\./ {print $3}')
+    if [ -z "$loaded" ] ||
+       [ "$(realpath "$(dirname "$loaded")")" != "$(realpath "$dir/$libdir_in_prefix")" ]; then
+      echo "bin/asperity does not load libasperity from $dir/$libdir_in_prefix (it loads '$loaded')"
+      exit 1
+    fi
+  fi
+}
+
+case $cli in
+  relocatable)
+    echo "== the installed command, without LD_LIBRARY_PATH"
+    run_installed_cli "$prefix"
+    echo "== the installed command, from a moved prefix"
+    # Moved rather than copied, so that nothing is left at the place it was installed to.
+    mkdir -p "$work/elsewhere"
+    mv "$prefix" "$work/elsewhere/moved"
+    run_installed_cli "$work/elsewhere/moved"
+    mv "$work/elsewhere/moved" "$prefix"
+    ;;
+  system)
+    # Configured for a system library directory, where the loader looks anyway, so the command
+    # has no RPATH; from this temporary prefix it has to be told where the library is.
+    echo "== the installed command (no RPATH: configured for a system libdir)"
+    LD_LIBRARY_PATH=$libdir${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH} "$prefix/bin/asperity" --size 64
+    ;;
+  none) ;;
+  *) echo "unknown CLI mode '$cli'"; exit 1 ;;
+esac
+
+# The consumer programs below are built against a temporary prefix the loader does not search.
+# pkg-config rightly adds no RPATH (where the library lies at run time is the user's business),
+# so they are linked with one to the installed libdir; CMake gives the find_package() consumer
+# its build-tree RPATH by itself. No LD_LIBRARY_PATH is needed anywhere.
+rpath_flag=-Wl,-rpath,$libdir
 
 echo "== C example with pkg-config"
 export PKG_CONFIG_PATH=$(dirname "$pc_file")
 "$cc" -std=c99 -pedantic -Wall -Wextra -Werror -Wstrict-prototypes \
-  "$source/examples/c/rough_contact.c" $(pkg-config --cflags --libs asperity) -lm \
+  "$source/examples/c/rough_contact.c" $(pkg-config --cflags --libs asperity) -lm "$rpath_flag" \
   -o "$work/rough_contact_pkgconfig"
 "$work/rough_contact_pkgconfig"
 
@@ -25,7 +73,7 @@ awk '/^```c$/ {inside = 1; next} /^```$/ && inside {exit} inside' "$source/READM
   > "$work/readme_example.c"
 [ -s "$work/readme_example.c" ] || { echo "no C example found in README.md"; exit 1; }
 "$cc" -std=c99 -pedantic -Wall -Werror -Wstrict-prototypes "$work/readme_example.c" \
-  $(pkg-config --cflags --libs asperity) -o "$work/readme_example"
+  $(pkg-config --cflags --libs asperity) "$rpath_flag" -o "$work/readme_example"
 "$work/readme_example"
 
 echo "== C example with find_package(asperity)"
@@ -35,13 +83,14 @@ cmake -S "$source/tests/install/consumer" -B "$work/consumer" \
 cmake --build "$work/consumer" > "$work/consumer-build.log"
 "$work/consumer/rough_contact"
 
-if [ -n "$fc" ] && [ -x "$fc" ]; then
+if [ -n "$fc" ]; then
   echo "== Fortran example from the installed module source"
   module_source=$(find "$prefix" -name asperity.f90 | head -n 1)
+  [ -n "$module_source" ] || { echo "the Fortran module source was not installed"; exit 1; }
   mkdir -p "$work/fortran"
   (cd "$work/fortran" &&
     "$fc" -std=f2008 -Wall -Werror "$module_source" "$source/examples/fortran/rough_contact.f90" \
-      -L"$libdir" -lasperity -o rough_contact_fortran &&
+      -L"$libdir" -lasperity "$rpath_flag" -o rough_contact_fortran &&
     ./rough_contact_fortran)
 fi
 echo "installed tree OK"
