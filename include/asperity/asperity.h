@@ -293,8 +293,9 @@ ASP_EXPORT int asp_system_get_field(const asp_system *system, int field, double 
 /* The names of the algorithms of this build, one per line ("pk\n..."), written into buffer
  * as a NUL-terminated string. For this and every other call that fills a string buffer:
  * *length (if length is not NULL) receives the length of the whole text without its NUL;
- * buffer may be NULL when size is 0 (to ask for the length); a buffer too small receives
- * the text cut to size - 1 characters and the call returns ASP_ERR_SIZE_MISMATCH. */
+ * size 0 with buffer NULL and length not NULL asks for the length only and returns ASP_OK;
+ * a buffer too small (size <= the length) receives the text cut to size - 1 characters and
+ * the call returns ASP_ERR_SIZE_MISMATCH (also for size 0 without a length pointer). */
 ASP_EXPORT int asp_algorithms(char *buffer, int64_t size, int64_t *length);
 
 /* ============================================================================================
@@ -316,10 +317,11 @@ ASP_EXPORT int asp_solver_describe(const asp_solver *solver, char *buffer, int64
                                    int64_t *length);
 
 /* Options by name. Every algorithm has
- *   "tolerance"       real    > 0, default 1e-8: stop when the error falls to it;
- *   "max_iterations"  integer >= 1, default 10000;
- *   "stall_window"    integer >= 0, default 1000: stop as stalled when the smallest error
- *                     seen has not fallen by 1 % within this many iterations (0: never);
+ *   "tolerance"       real in (0, 1e300], default 1e-8: stop when the error falls to it;
+ *   "max_iterations"  integer in [1, 9.2e18], default 10000;
+ *   "stall_window"    integer in [0, 9.2e18], default 1000: stop as stalled when the
+ *                     smallest error seen has not fallen below 0.99 times itself within
+ *                     this many iterations (0: never stall);
  * and its own options (asp_solver_describe lists them). Integer options take whole numbers
  * given as doubles. An unknown name or a value outside the range is refused with
  * ASP_ERR_INVALID_ARGUMENT, naming the option and listing the valid names or the range;
@@ -339,9 +341,10 @@ ASP_EXPORT int asp_solver_set_max_iterations(asp_solver *solver, int64_t max_ite
  * the iteration number (0 is the starting point), the wall-clock seconds since the solve
  * started and the error. Return 0 to go on; any other value stops the solve cleanly: the
  * system holds the valid, consistent state of that iteration and the termination reason is
- * ASP_TERMINATION_CANCELLED. The callback runs on the thread that called asp_solver_solve and
- * must not use the solver or system being solved. NULL removes it. user_data is passed through
- * untouched. */
+ * ASP_TERMINATION_CANCELLED (unless that iteration's error already met the tolerance: a
+ * converged state is reported as converged). The callback runs on the thread that called
+ * asp_solver_solve and must not use the solver or system being solved. NULL removes it.
+ * user_data is passed through untouched. */
 typedef int (*asp_progress_fn)(int64_t iteration, double seconds, double error, void *user_data);
 ASP_EXPORT int asp_solver_set_progress(asp_solver *solver, asp_progress_fn progress,
                                        void *user_data);
@@ -372,9 +375,10 @@ ASP_EXPORT int asp_solver_set_history(asp_solver *solver, int on);
  *   ASP_TERMINATION_CANCELLED        the progress callback returned non-zero;
  *   ASP_TERMINATION_STALLED          no progress within stall_window iterations;
  *   ASP_TERMINATION_BREAKDOWN        the arithmetic broke down (a non-finite value appeared);
- *                                    the system is back at the state the solve started from.
+ *                                    the system is reset to the zero-pressure state (no
+ *                                    contact), and the final error is the last finite one.
  * Errors (a status other than ASP_OK) mean the solve did not run or its result could not be
- * stored; the system keeps the state it had before the call. */
+ * stored; the system keeps the state it had before the call, and the solver has no report. */
 #define ASP_CONTROL_MEAN_PRESSURE 501
 #define ASP_CONTROL_PENETRATION 502
 #define ASP_CONTROL_MEAN_GAP 503
@@ -398,7 +402,8 @@ ASP_EXPORT int asp_solver_elapsed_seconds(const asp_solver *solver, double *seco
 
 /* The history of the last solve, when asp_solver_set_history was on: one row per iteration,
  * starting with iteration 0 (the starting point). asp_solver_get_history copies one column
- * into values, n = the history length.
+ * into values, n = the history length (values may be NULL when n is 0); another n is
+ * refused with ASP_ERR_SIZE_MISMATCH.
  *   ASP_HISTORY_ITERATION         iteration number
  *   ASP_HISTORY_EVALUATIONS       objective or gradient evaluations so far
  *   ASP_HISTORY_TRANSFORMS        FFTs so far (one forward or one backward transform each)

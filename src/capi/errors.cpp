@@ -30,7 +30,7 @@ const char *asp_status_string(int status) {
     case ASP_OK: return "success";
     case ASP_ERR_NULL_POINTER: return "a required pointer argument is NULL";
     case ASP_ERR_INVALID_ARGUMENT: return "invalid argument";
-    case ASP_ERR_SIZE_MISMATCH: return "array size does not match the grid";
+    case ASP_ERR_SIZE_MISMATCH: return "size or count does not match what the call needs";
     case ASP_ERR_OUT_OF_MEMORY: return "out of memory";
     case ASP_ERR_UNSUPPORTED: return "not supported";
     case ASP_ERR_INVALID_STATE: return "call not valid in the current state";

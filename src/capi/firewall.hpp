@@ -4,6 +4,7 @@
 #pragma once
 
 #include <new>
+#include <stdexcept>
 #include <string>
 
 #include "asperity/asperity.h"
@@ -25,6 +26,10 @@ int guarded(const char *function, Body &&body) noexcept {
     return record_error(static_cast<int>(e.status()), function, e.what());
   } catch (const std::bad_alloc &) {
     return record_error(ASP_ERR_OUT_OF_MEMORY, function, "out of memory");
+  } catch (const std::length_error &) {
+    // A container asked for more elements than it can address: a size too large to hold.
+    return record_error(ASP_ERR_OUT_OF_MEMORY, function,
+                        "out of memory: an array of this size cannot be allocated");
   } catch (const std::exception &e) {
     return record_error(ASP_ERR_INTERNAL, function, e.what());
   } catch (...) {

@@ -138,6 +138,7 @@ int asp_solver_set_history(asp_solver *solver, int on) {
 int asp_solver_solve(asp_solver *solver, asp_system *system, int control, double value) {
   return guarded("asp_solver_solve", [&] {
     asp::require_not_null(solver, "solver");
+    solver->solver->forget_last_solve();
     asp::require_not_null(system, "system");
     solver->solver->solve(*system->system, control_of(control), value);
   });
@@ -192,7 +193,6 @@ int asp_solver_get_history(const asp_solver *solver, int column, double *values,
     report_of(solver);
     const asp::History &history = solver->solver->history();
     const auto rows = static_cast<int64_t>(history.size());
-    asp::require_not_null(values, "values");
     if (n != rows)
       throw asp::Error(asp::Status::size_mismatch,
                        "array 'values' has count " + std::to_string(n) +

@@ -5,6 +5,7 @@
 #include <complex>
 #include <cstddef>
 #include <cstdint>
+#include <new>
 #include <vector>
 
 namespace asp {
@@ -23,7 +24,11 @@ struct FieldAllocator {
   FieldAllocator() = default;
   template <class U>
   FieldAllocator(const FieldAllocator<U> &) noexcept {}
-  T *allocate(std::size_t n) { return static_cast<T *>(allocate_field_bytes(n * sizeof(T))); }
+  T *allocate(std::size_t n) {
+    // A count whose byte size wraps around is a request no machine can serve.
+    if (n > static_cast<std::size_t>(-1) / sizeof(T)) throw std::bad_alloc();
+    return static_cast<T *>(allocate_field_bytes(n * sizeof(T)));
+  }
   void deallocate(T *p, std::size_t n) noexcept { free_field_bytes(p, n * sizeof(T)); }
   template <class U>
   bool operator==(const FieldAllocator<U> &) const noexcept { return true; }

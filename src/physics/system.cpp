@@ -13,10 +13,10 @@ namespace asp {
 
 System::System(std::shared_ptr<const Grid> grid, double contact_modulus)
     : grid_(std::move(grid)),
-      substrate_(new PeriodicHalfSpace(*grid_, contact_modulus)),
-      interaction_(new HardWall()),
       heights_(grid_->make_field()),
-      state_{grid_->make_field(), grid_->make_field(), 0.0} {
+      state_{grid_->make_field(), grid_->make_field(), 0.0},
+      substrate_(new PeriodicHalfSpace(*grid_, contact_modulus)),
+      interaction_(new HardWall()) {
   last_reference_pressure_ = reference_pressure(0.0);
   reset_state();
 }
@@ -86,9 +86,33 @@ void System::displacement(double *out) const {
   loops::for_each(grid_->n_pixels(), [&](std::int64_t i) { out[i] = g[i] + h[i] + shift; });
 }
 
+void System::set_k0(double k0) {
+  const double p_mean = mean_pressure();
+  const double shift = p_mean / k0 - p_mean / substrate_->k0();
+  if (!std::isfinite(state_.penetration + shift))
+    throw Error(Status::invalid_argument,
+                "argument 'k0' is " + format_number(k0) + ": the mean displacement pbar/k0 of " +
+                    "the current state would not be a finite double");
+  substrate_->set_k0(k0);
+  state_.penetration += shift;
+}
+
 double System::elastic_energy() const {
+  // From the pressure, u = K^-1 p, rather than from g + h - max h + delta: the latter cancels
+  // the heights, and its round-off, squared in the energy, can dwarf small deformations of
+  // tall surfaces. The q = 0 mode is left out either way.
+  const std::int64_t n = grid_->n_pixels();
+  const double *p = state_.pressure.data();
+  if (loops::maximum(grid_->reductions(), n, [&](std::int64_t i) { return std::fabs(p[i]); }) ==
+      0.0)
+    return 0.0;
+  Spectrum s = substrate_->make_spectrum();
+  substrate_->forward(p, s.data());
+  const Field &compliance = substrate_->normalised_compliance();
+  loops::for_each(static_cast<std::int64_t>(s.size()),
+                  [&](std::int64_t k) { s[k] *= compliance[k]; });
   Field u = grid_->make_field();
-  displacement(u.data());
+  substrate_->backward(s.data(), u.data());
   return substrate_->elastic_energy(u.data());
 }
 

@@ -28,7 +28,9 @@ class System {
   const Grid &grid() const { return *grid_; }
   const Substrate &substrate() const { return *substrate_; }
   const Interaction &interaction() const { return *interaction_; }
-  void set_k0(double k0) { substrate_->set_k0(k0); }
+  // Changes K~(0) keeping the pressure and the gap: only the rigid-body penetration moves, by
+  // pbar (1/K~(0)new - 1/K~(0)old), so that the state stays an equilibrium.
+  void set_k0(double k0);
 
   // Copies the heights (finite, with a finite range max - min) and resets the state.
   void set_topography(const double *heights);
@@ -57,21 +59,23 @@ class System {
   double mean_pressure() const;
   double mean_gap() const;
   double total_force() const;
-  double elastic_energy() const;    // q != 0 modes, see Substrate::elastic_energy
+  double elastic_energy() const;    // q != 0 modes of K^-1 p, see Substrate::elastic_energy
   double mean_mode_energy() const;  // A pbar^2/(2 K~(0))
   void displacement(double *out) const;
 
  private:
+  // The fields come first: members are made in this order, and a grid too large for memory
+  // must fail at its first allocation, before the substrate walks its spectrum.
   std::shared_ptr<const Grid> grid_;
+  Field heights_;
+  ContactState state_;
   std::unique_ptr<Substrate> substrate_;
   std::unique_ptr<Interaction> interaction_;
-  Field heights_;
   double max_height_ = 0.0;
   double height_range_ = 0.0;
   double slope_pressure_ = 0.0;  // E* h'_rms/2
   double reference_pressure_override_ = 0.0;
   double last_reference_pressure_ = 0.0;
-  ContactState state_;
 };
 
 }  // namespace asp

@@ -83,7 +83,13 @@ void Solver::set_progress(ProgressFunction progress, void *user_data) {
   progress_data_ = user_data;
 }
 
+void Solver::forget_last_solve() {
+  report_ = SolveReport();
+  history_.clear();
+}
+
 void Solver::solve(System &system, Control control, double value) {
+  forget_last_solve();
   check_request(algorithm_, system, control);
   require_finite(value, "value");
   if (control == Control::mean_pressure && value < 0.0 &&
@@ -92,8 +98,6 @@ void Solver::solve(System &system, Control control, double value) {
                 "argument 'value' is " + format_number(value) +
                     ": a non-adhesive hard wall cannot carry a negative mean pressure");
 
-  report_ = SolveReport();
-  history_.clear();
   MonitorSettings settings;
   settings.tolerance = options_.number("tolerance");
   settings.max_iterations = static_cast<std::int64_t>(options_.number("max_iterations"));

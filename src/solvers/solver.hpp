@@ -40,8 +40,13 @@ class Solver {
   void set_progress(ProgressFunction progress, void *user_data);
   void set_history(bool on) { record_history_ = on; }
 
-  // Checks the request (throws Error before touching the system), runs the algorithm from the
-  // system's current state and records the report and, if asked, the history.
+  // Forgets the last solve's report and history, so that a refused or failed solve leaves no
+  // report behind that could be mistaken for its own.
+  void forget_last_solve();
+
+  // Forgets the last solve, checks the request (throws Error before touching the system), runs
+  // the algorithm from the system's current state and records the report and, if asked, the
+  // history.
   void solve(System &system, Control control, double value);
 
   const SolveReport &report() const { return report_; }

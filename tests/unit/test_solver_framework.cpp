@@ -1,0 +1,225 @@
+// What every solver shares: the monitor's termination reasons, history and progress, the
+// registry's refusals and descriptions, and options by name.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+#include "scene.hpp"
+#include "solvers/dual_formulation.hpp"
+#include "solvers/monitor.hpp"
+#include "solvers/registry.hpp"
+
+namespace {
+using asp_test::rough_surface;
+
+asp::IterationState at_error(double error) {
+  asp::IterationState s;
+  s.error = error;
+  return s;
+}
+
+TEST(Monitor, ConvergedWhenTheErrorMeetsTheTolerance) {
+  asp::MonitorSettings settings;
+  settings.tolerance = 1e-3;
+  asp::Monitor monitor(settings);
+  EXPECT_FALSE(monitor.should_stop(0, at_error(1.0)));
+  EXPECT_TRUE(monitor.should_stop(1, at_error(1e-3)));
+  EXPECT_EQ(monitor.termination(), asp::Termination::converged);
+  EXPECT_EQ(monitor.iterations(), 1);
+}
+
+TEST(Monitor, IterationLimit) {
+  asp::MonitorSettings settings;
+  settings.max_iterations = 2;
+  asp::Monitor monitor(settings);
+  EXPECT_FALSE(monitor.should_stop(0, at_error(1.0)));
+  EXPECT_FALSE(monitor.should_stop(1, at_error(0.5)));
+  EXPECT_TRUE(monitor.should_stop(2, at_error(0.25)));
+  EXPECT_EQ(monitor.termination(), asp::Termination::iteration_limit);
+}
+
+TEST(Monitor, StalledWhenTheBestErrorStopsFalling) {
+  asp::MonitorSettings settings;
+  settings.stall_window = 5;
+  asp::Monitor monitor(settings);
+  // Falls for a while, then only by 0.1 % per iteration: below the 1 % the window asks for.
+  double error = 1.0;
+  std::int64_t k = 0;
+  for (; k < 10; ++k, error *= 0.5) ASSERT_FALSE(monitor.should_stop(k, at_error(error)));
+  // Iteration 10 still improves by half; 11 to 14 do not count.
+  for (int extra = 0; extra < 5; ++extra, ++k, error *= 0.999)
+    ASSERT_FALSE(monitor.should_stop(k, at_error(error)));
+  EXPECT_TRUE(monitor.should_stop(k, at_error(error)));
+  EXPECT_EQ(monitor.termination(), asp::Termination::stalled);
+  // A window of 0 never stalls.
+  settings.stall_window = 0;
+  asp::Monitor patient(settings);
+  for (std::int64_t i = 0; i < 100; ++i) ASSERT_FALSE(patient.should_stop(i, at_error(1.0)));
+}
+
+TEST(Monitor, BreakdownOnANonFiniteErrorKeepsTheLastFiniteOne) {
+  asp::Monitor monitor(asp::MonitorSettings{});
+  EXPECT_FALSE(monitor.should_stop(0, at_error(0.5)));
+  EXPECT_TRUE(monitor.should_stop(1, at_error(NAN)));
+  EXPECT_EQ(monitor.termination(), asp::Termination::breakdown);
+  EXPECT_EQ(monitor.error(), 0.5);
+}
+
+int cancel_at_three(std::int64_t iteration, double, double, void *calls) {
+  ++*static_cast<int *>(calls);
+  return iteration == 3 ? 1 : 0;
+}
+
+TEST(Monitor, ProgressIsCalledEveryIterationAndCancels) {
+  int calls = 0;
+  asp::MonitorSettings settings;
+  settings.progress = cancel_at_three;
+  settings.progress_data = &calls;
+  settings.record_history = true;
+  asp::Monitor monitor(settings);
+  std::int64_t k = 0;
+  while (!monitor.should_stop(k, at_error(1.0 / (k + 1)))) ++k;
+  EXPECT_EQ(k, 3);
+  EXPECT_EQ(calls, 4);
+  EXPECT_EQ(monitor.termination(), asp::Termination::cancelled);
+  ASSERT_EQ(monitor.history().size(), 4u);
+  EXPECT_EQ(monitor.history()[3][static_cast<int>(asp::HistoryColumn::iteration)], 3.0);
+  EXPECT_EQ(monitor.history()[3][static_cast<int>(asp::HistoryColumn::error)], 0.25);
+}
+
+// ---- the registry and options -------------------------------------------------------------
+
+TEST(Registry, RefusesUnknownAlgorithmsNamingTheKnownOnes) {
+  try {
+    asp::Solver solver("no-such-solver");
+    FAIL() << "accepted an unknown algorithm";
+  } catch (const asp::Error &e) {
+    EXPECT_EQ(e.status(), asp::Status::unsupported);
+    EXPECT_NE(std::string(e.what()).find("pk"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Registry, RefusesAControlTheAlgorithmDoesNotServeBeforeTouchingTheSystem) {
+  auto grid = asp_test::grid_2d(32, 32, 1.0, 1.0);
+  asp::System system(grid, 1.0);
+  auto h = rough_surface(*grid, 1);
+  system.set_topography(h.data());
+  system.state().pressure[3] = 0.25;  // a state that must survive the refusal
+  asp::Solver solver("pk");
+  try {
+    solver.solve(system, asp::Control::mean_gap, 0.1);
+    FAIL() << "pk accepted mean-gap control";
+  } catch (const asp::Error &e) {
+    EXPECT_EQ(e.status(), asp::Status::unsupported);
+    EXPECT_NE(std::string(e.what()).find("mean_gap"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(system.state().pressure[3], 0.25);
+  EXPECT_FALSE(solver.report().available);
+}
+
+TEST(Registry, DescribesEveryOptionWithItsDefault) {
+  const std::string text = asp::describe(asp::find_algorithm("pk"));
+  for (const char *word : {"pk:", "mean_pressure", "penetration", "tolerance", "1e-08",
+                           "max_iterations", "10000", "stall_window", "1000"})
+    EXPECT_NE(text.find(word), std::string::npos) << word << " missing from:\n" << text;
+}
+
+TEST(Options, DefaultsRangesAndTypes) {
+  asp::Solver solver("pk");
+  EXPECT_EQ(solver.option("tolerance"), 1e-8);
+  EXPECT_EQ(solver.option("max_iterations"), 10000);
+  EXPECT_EQ(solver.option("stall_window"), 1000);
+  solver.set_option("tolerance", 1e-6);
+  EXPECT_EQ(solver.option("tolerance"), 1e-6);
+  for (double bad : {0.0, -1.0, std::nan(""), HUGE_VAL})
+    EXPECT_THROW(solver.set_option("tolerance", bad), asp::Error) << bad;
+  EXPECT_THROW(solver.set_option("max_iterations", 2.5), asp::Error);
+  EXPECT_THROW(solver.set_option("max_iterations", 0.0), asp::Error);
+  EXPECT_THROW(solver.set_option("stall_window", -1.0), asp::Error);
+  EXPECT_THROW(solver.set_option("tolerance", std::string("small")), asp::Error);
+  try {
+    solver.set_option("tolerence", 1e-6);
+    FAIL();
+  } catch (const asp::Error &e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("'tolerence'"), std::string::npos) << message;
+    EXPECT_NE(message.find("tolerance"), std::string::npos) << message;  // lists valid names
+  }
+  EXPECT_EQ(solver.option("tolerance"), 1e-6);  // refusals change nothing
+}
+
+// ---- whole solves through the monitor -----------------------------------------------------
+
+TEST(Solve, BreakdownResetsTheStateAndSaysSo) {
+  auto grid = asp_test::grid_2d(32, 32, 1.0, 1.0);
+  asp::System system(grid, 1.0);
+  auto h = rough_surface(*grid, 2);
+  system.set_topography(h.data());
+  system.state().pressure[5] = NAN;  // a corrupted warm start
+  asp::Solver solver("pk");
+  solver.solve(system, asp::Control::mean_pressure, 0.01);
+  EXPECT_EQ(solver.report().termination, asp::Termination::breakdown);
+  EXPECT_FALSE(solver.report().converged());
+  EXPECT_TRUE(std::isfinite(solver.report().error));
+  for (double p : system.state().pressure) ASSERT_EQ(p, 0.0);
+  for (std::size_t i = 0; i < h.size(); ++i)
+    ASSERT_EQ(system.state().gap[i], system.max_height() - h[i]);
+  // The system is usable: the next solve converges.
+  solver.solve(system, asp::Control::mean_pressure, 0.01);
+  EXPECT_TRUE(solver.report().converged());
+}
+
+TEST(Solve, StallsWhenTheToleranceIsBelowRoundOff) {
+  auto grid = asp_test::grid_2d(32, 32, 1.0, 1.0);
+  asp::System system(grid, 1.0);
+  auto h = rough_surface(*grid, 3);
+  system.set_topography(h.data());
+  asp::Solver solver("pk");
+  solver.set_option("tolerance", 1e-300);
+  solver.set_option("stall_window", 20);
+  solver.solve(system, asp::Control::mean_pressure, 0.01);
+  EXPECT_EQ(solver.report().termination, asp::Termination::stalled);
+  EXPECT_LT(solver.report().error, 1e-12);  // it got as far as rounding allows
+  for (double p : system.state().pressure) ASSERT_TRUE(std::isfinite(p));
+}
+
+TEST(Solve, HistoryRecordsEveryIterationOnlyWhenAsked) {
+  auto grid = asp_test::grid_2d(48, 48, 1.0, 1.0);
+  asp::System system(grid, 1.0);
+  auto h = rough_surface(*grid, 4);
+  system.set_topography(h.data());
+  asp::Solver solver("pk");
+  solver.solve(system, asp::Control::mean_pressure, 0.01);
+  EXPECT_TRUE(solver.history().empty());
+
+  system.reset_state();
+  solver.set_history(true);
+  solver.solve(system, asp::Control::mean_pressure, 0.01);
+  const asp::History &history = solver.history();
+  ASSERT_EQ(static_cast<std::int64_t>(history.size()), solver.report().iterations + 1);
+  using C = asp::HistoryColumn;
+  for (std::size_t k = 0; k < history.size(); ++k) {
+    EXPECT_EQ(history[k][static_cast<int>(C::iteration)], static_cast<double>(k));
+    if (k > 0) {
+      EXPECT_GE(history[k][static_cast<int>(C::transforms)],
+                history[k - 1][static_cast<int>(C::transforms)] + 1);
+      EXPECT_EQ(history[k][static_cast<int>(C::evaluations)],
+                history[k - 1][static_cast<int>(C::evaluations)] + 1);
+      EXPECT_GE(history[k][static_cast<int>(C::seconds)],
+                history[k - 1][static_cast<int>(C::seconds)]);
+    }
+  }
+  EXPECT_EQ(history.back()[static_cast<int>(C::error)], solver.report().error);
+  EXPECT_EQ(history.back()[static_cast<int>(C::contact_fraction)], system.contact_fraction());
+  // At the solution the dual objective is minus the elastic energy, q = 0 term included.
+  const double objective = history.back()[static_cast<int>(C::objective)];
+  const double energy = system.elastic_energy() + system.mean_mode_energy();
+  EXPECT_NEAR(objective, -energy, 1e-6 * energy);
+  // And it decreases from the start overall.
+  EXPECT_LT(objective, history.front()[static_cast<int>(C::objective)]);
+}
+
+}  // namespace
