@@ -1,0 +1,338 @@
+! The public interface through the Fortran module: a Hertzian sphere solved with "pk", options
+! set by name (and refused by name), the history, a progress callback written in Fortran that
+! cancels the solve, a solve to convergence, the texts that come back in buffers, FFTW wisdom,
+! and the scalar results. Prints every failed check and exits non-zero if there was one.
+module api_checks
+  use, intrinsic :: iso_c_binding, only: c_int, c_int64_t, c_double, c_ptr, c_f_pointer
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use asperity
+  implicit none
+  private
+  public :: progress_counter, count_and_cancel, expect, expect_status, failures
+
+  ! What the progress callback sees through its user data.
+  type, bind(c) :: progress_counter
+    integer(c_int64_t) :: calls = 0          ! calls so far
+    integer(c_int64_t) :: cancel_after = -1  ! return non-zero on this call (< 0: never)
+    integer(c_int64_t) :: out_of_order = 0   ! calls whose iteration was not calls - 1
+    integer(c_int64_t) :: bad_values = 0     ! calls with negative or decreasing seconds, or
+                                             ! a non-finite or negative error
+    real(c_double) :: last_seconds = 0
+  end type
+
+  integer :: failures = 0
+
+contains
+
+  ! An asp_progress_fn: counts its calls in the progress_counter that user_data points to,
+  ! checks what it is given, and cancels on the call the counter asks for.
+  function count_and_cancel(iteration, seconds, error, user_data) result(cancel) bind(c)
+    integer(c_int64_t), value :: iteration
+    real(c_double), value :: seconds, error
+    type(c_ptr), value :: user_data
+    integer(c_int) :: cancel
+    type(progress_counter), pointer :: counter
+    call c_f_pointer(user_data, counter)
+    if (iteration /= counter%calls) counter%out_of_order = counter%out_of_order + 1
+    if (seconds < 0 .or. seconds < counter%last_seconds .or. .not. ieee_is_finite(error) &
+        .or. error < 0) counter%bad_values = counter%bad_values + 1
+    counter%last_seconds = seconds
+    counter%calls = counter%calls + 1
+    cancel = 0
+    if (counter%calls == counter%cancel_after) cancel = 1
+  end function
+
+  subroutine expect(condition, what)
+    logical, intent(in) :: condition
+    character(len=*), intent(in) :: what
+    if (.not. condition) then
+      failures = failures + 1
+      print '(a, a)', 'FAILED: ', what
+    end if
+  end subroutine
+
+  ! status must be expected; on a mismatch the library's message is printed too.
+  subroutine expect_status(status, expected, what)
+    integer(c_int), intent(in) :: status, expected
+    character(len=*), intent(in) :: what
+    if (status /= expected) then
+      failures = failures + 1
+      print '(a, a, a, i0, a, i0, a, a)', 'FAILED: ', what, ': status ', status, &
+          ' instead of ', expected, '; last error: ', asp_last_error_text()
+    end if
+  end subroutine
+
+end module api_checks
+
+program test_api
+  use, intrinsic :: iso_c_binding, only: c_int, c_int64_t, c_double, c_ptr, c_null_ptr, &
+                                         c_null_funptr, c_null_char, c_associated, c_funloc, &
+                                         c_loc
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use asperity
+  use api_checks
+  implicit none
+
+  integer(c_int64_t), parameter :: n = 64, cancel_after = 3
+  real(c_double), parameter :: box = 1, modulus = 1, radius = 1, mean_pressure = 1d-3
+  real(c_double), parameter :: tolerance = 1d-10
+  character(len=*), parameter :: wisdom_file = 'fortran_api.wisdom'
+
+  type(c_ptr) :: grid, system, solver, no_solver
+  type(progress_counter), target :: counter
+  real(c_double), allocatable :: heights(:, :), pressure(:, :), column(:)
+  real(c_double), allocatable :: seconds(:), errors(:), evaluations(:), transforms(:)
+  character(len=:), allocatable :: text, names
+  character(len=2) :: small
+  character(len=256) :: large
+  character(len=32) :: padded_name
+  integer(c_int64_t) :: length, rows, iterations, nx, ny, pixels, i
+  integer(c_int) :: status, reason, converged, dimension
+  real(c_double) :: value, error, scalar, lx, ly
+  integer :: k, unit
+
+  allocate (heights(n, n), pressure(n, n))
+
+  ! ---- version and status texts ----
+  call expect(len(asp_version_text()) > 0, 'asp_version_text is not empty')
+  call expect(asp_abi_version() >= 1, 'asp_abi_version is at least 1')
+  call expect(len(asp_status_text(ASP_ERR_IO)) > 0 .and. &
+              asp_status_text(ASP_ERR_IO) /= asp_status_text(ASP_OK), &
+              'asp_status_text(ASP_ERR_IO) has a text of its own')
+
+  ! ---- grid, a sphere, a system ----
+  call expect_status(asp_grid_create_2d(n, n, box, box, grid), ASP_OK, 'asp_grid_create_2d')
+  call expect_status(asp_grid_get_shape(grid, dimension, nx, ny, pixels), ASP_OK, &
+                     'asp_grid_get_shape')
+  call expect(dimension == 2 .and. nx == n .and. ny == n .and. pixels == n * n, &
+              'the grid has the shape it was made with')
+  call expect_status(asp_grid_get_box(grid, lx, ly), ASP_OK, 'asp_grid_get_box')
+  call expect(lx == box .and. ly == box, 'the grid has the box it was made with')
+  call expect_status(asp_topography_sphere(grid, radius, heights, n * n), ASP_OK, &
+                     'asp_topography_sphere')
+  call expect(maxval(heights) == 0, 'the apex of the sphere is at h = 0')
+  call expect_status(asp_system_create(grid, modulus, system), ASP_OK, 'asp_system_create')
+  call expect_status(asp_system_set_topography(system, heights, n * n), ASP_OK, &
+                     'asp_system_set_topography')
+  call expect_status(asp_system_set_topography(system, heights, n * n - 1), &
+                     ASP_ERR_SIZE_MISMATCH, 'asp_system_set_topography with a wrong count')
+
+  ! ---- algorithms and the solver's description, as texts and in buffers ----
+  names = asp_algorithms_text(status)
+  call expect_status(status, ASP_OK, 'asp_algorithms_text')
+  call expect(index(names, 'pk' // new_line('a')) == 1, &
+              'the algorithms start with "pk" on a line of its own: "' // names // '"')
+  status = asp_algorithms(large, len(large, c_int64_t), length)
+  call expect_status(status, ASP_OK, 'asp_algorithms into a large buffer')
+  call expect(length == len(names, c_int64_t), 'asp_algorithms reports the length of the text')
+  call expect(large(1:len(names)) == names .and. large(len(names) + 1:len(names) + 1) == &
+              c_null_char, 'asp_algorithms writes the text and its NUL into the buffer')
+  status = asp_algorithms(small, len(small, c_int64_t), length)
+  call expect_status(status, ASP_ERR_SIZE_MISMATCH, 'asp_algorithms into a 2-byte buffer')
+  call expect(length == len(names, c_int64_t), &
+              'asp_algorithms reports the full length even when the buffer is too small')
+  call expect(small(1:1) == names(1:1) .and. small(2:2) == c_null_char, &
+              'a buffer too small receives the text cut to size - 1 characters and a NUL')
+
+  call expect_status(asp_solver_create_f('no_such_algorithm', no_solver), ASP_ERR_UNSUPPORTED, &
+                     'asp_solver_create_f with an unknown algorithm')
+  call expect(.not. c_associated(no_solver), 'a failed create sets the handle to NULL')
+  call expect(index(asp_last_error_text(), 'no_such_algorithm') > 0, &
+              'the message names the unknown algorithm: ' // asp_last_error_text())
+  ! Trailing blanks, as a fixed-length Fortran variable has, are dropped.
+  call expect_status(asp_solver_create_f('pk  ', solver), ASP_OK, 'asp_solver_create_f')
+
+  text = asp_solver_describe_text(solver, status)
+  call expect_status(status, ASP_OK, 'asp_solver_describe_text')
+  call expect(index(text, 'pk') == 1, 'the description starts with the name')
+  call expect(index(text, 'tolerance') > 0 .and. index(text, 'max_iterations') > 0 .and. &
+              index(text, 'stall_window') > 0, 'the description lists the common options')
+  status = asp_solver_describe(solver, large, 0_c_int64_t, length)
+  call expect_status(status, ASP_OK, 'asp_solver_describe asking for the length')
+  call expect(length == len(text, c_int64_t), 'asp_solver_describe reports the length')
+
+  ! ---- options by name ----
+  call expect_status(asp_solver_get_option_f(solver, 'tolerance', value), ASP_OK, &
+                     'asp_solver_get_option_f(tolerance)')
+  call expect(value == 1d-8, 'the default tolerance is 1e-8')
+  call expect_status(asp_solver_set_option_f(solver, 'tolerance', tolerance), ASP_OK, &
+                     'asp_solver_set_option_f(tolerance)')
+  call expect_status(asp_solver_set_option(solver, 'max_iterations' // c_null_char, 500d0), &
+                     ASP_OK, 'asp_solver_set_option(max_iterations)')
+  padded_name = 'max_iterations'
+  call expect_status(asp_solver_get_option_f(solver, padded_name, value), ASP_OK, &
+                     'asp_solver_get_option_f with a blank-padded name')
+  call expect(value == 500, 'max_iterations reads back as set')
+
+  status = asp_solver_set_option_f(solver, 'no_such_option', 1d0)
+  call expect_status(status, ASP_ERR_INVALID_ARGUMENT, 'an unknown option')
+  call expect(index(asp_last_error_text(), 'no_such_option') > 0, &
+              'the message names the unknown option: ' // asp_last_error_text())
+  call expect(index(asp_last_error_text(), 'tolerance') > 0, &
+              'the message lists the valid options: ' // asp_last_error_text())
+  status = asp_solver_set_option_f(solver, 'tolerance', -1d0)
+  call expect_status(status, ASP_ERR_INVALID_ARGUMENT, 'a negative tolerance')
+  call expect(index(asp_last_error_text(), 'tolerance') > 0, &
+              'the message names the option out of range: ' // asp_last_error_text())
+  status = asp_solver_set_option_f(solver, 'max_iterations', 2.5d0)
+  call expect_status(status, ASP_ERR_INVALID_ARGUMENT, 'a fractional max_iterations')
+  call expect(index(asp_last_error_text(), 'max_iterations') > 0, &
+              'the message names the integer option: ' // asp_last_error_text())
+  status = asp_solver_set_option_string_f(solver, 'tolerance', 'tight')
+  call expect_status(status, ASP_ERR_INVALID_ARGUMENT, 'a string for a numeric option')
+  call expect(index(asp_last_error_text(), 'tolerance') > 0, &
+              'the message names the numeric option: ' // asp_last_error_text())
+  text = asp_solver_get_option_string_text(solver, 'tolerance', status)
+  call expect_status(status, ASP_ERR_INVALID_ARGUMENT, 'reading a numeric option as a string')
+  call expect(len(text) == 0, 'a refused text is empty')
+  call expect_status(asp_solver_get_option_f(solver, 'tolerance', value), ASP_OK, &
+                     'asp_solver_get_option_f(tolerance) after refusals')
+  call expect(value == tolerance, 'refused values leave the option as it was')
+
+  ! ---- before any solve there is no report ----
+  call expect_status(asp_solver_termination(solver, reason), ASP_ERR_INVALID_STATE, &
+                     'asp_solver_termination before a solve')
+
+  ! ---- a solve cancelled by the progress callback, with history ----
+  counter%cancel_after = cancel_after
+  call expect_status(asp_solver_set_history(solver, 1_c_int), ASP_OK, 'asp_solver_set_history')
+  call expect_status(asp_solver_set_progress(solver, c_funloc(count_and_cancel), &
+                                             c_loc(counter)), ASP_OK, 'asp_solver_set_progress')
+  call expect_status(asp_solver_solve(solver, system, ASP_CONTROL_MEAN_PRESSURE, mean_pressure), &
+                     ASP_OK, 'the cancelled solve')
+  call expect_status(asp_solver_termination(solver, reason), ASP_OK, 'asp_solver_termination')
+  call expect(reason == ASP_TERMINATION_CANCELLED, 'the solve ends as cancelled')
+  call expect_status(asp_solver_converged(solver, converged), ASP_OK, 'asp_solver_converged')
+  call expect(converged == 0, 'a cancelled solve has not converged')
+  call expect(counter%calls == cancel_after, 'the callback ran until it cancelled')
+  call expect(counter%out_of_order == 0, 'the callback sees iterations 0, 1, 2, ... in order')
+  call expect(counter%bad_values == 0, &
+              'the callback sees non-decreasing seconds and finite, non-negative errors')
+  call expect_status(asp_solver_iterations(solver, iterations), ASP_OK, 'asp_solver_iterations')
+  call expect(iterations == cancel_after - 1, 'the cancelled solve stopped at the iteration ' // &
+              'of the cancelling call')
+  call expect_status(asp_solver_final_error(solver, error), ASP_OK, 'asp_solver_final_error')
+
+  call expect_status(asp_solver_history_length(solver, rows), ASP_OK, &
+                     'asp_solver_history_length')
+  call expect(rows == cancel_after, 'one history row per iteration, from iteration 0')
+  allocate (column(rows), seconds(rows), errors(rows), evaluations(rows), transforms(rows))
+  call expect_status(asp_solver_get_history(solver, ASP_HISTORY_ITERATION, column, rows), &
+                     ASP_OK, 'asp_solver_get_history(ITERATION)')
+  call expect(all(column == [(real(i, c_double), i = 0, rows - 1)]), &
+              'the iteration column counts 0, 1, 2, ...')
+  call expect_status(asp_solver_get_history(solver, ASP_HISTORY_SECONDS, seconds, rows), &
+                     ASP_OK, 'asp_solver_get_history(SECONDS)')
+  call expect(seconds(1) >= 0 .and. all(seconds(2:) >= seconds(:rows - 1)), &
+              'the seconds column starts non-negative and never decreases')
+  call expect_status(asp_solver_get_history(solver, ASP_HISTORY_ERROR, errors, rows), &
+                     ASP_OK, 'asp_solver_get_history(ERROR)')
+  call expect(all(ieee_is_finite(errors)) .and. all(errors >= 0), &
+              'the error column is finite and non-negative')
+  call expect(errors(rows) == error, 'the last error of the history is the final error')
+  call expect_status(asp_solver_get_history(solver, ASP_HISTORY_EVALUATIONS, evaluations, &
+                     rows), ASP_OK, 'asp_solver_get_history(EVALUATIONS)')
+  call expect(all(evaluations(2:) >= evaluations(:rows - 1)), &
+              'the evaluation count never decreases')
+  call expect_status(asp_solver_get_history(solver, ASP_HISTORY_TRANSFORMS, transforms, rows), &
+                     ASP_OK, 'asp_solver_get_history(TRANSFORMS)')
+  call expect(all(transforms(2:) >= transforms(:rows - 1)) .and. transforms(rows) > 0, &
+              'the transform count grows')
+  call expect_status(asp_solver_get_history(solver, ASP_HISTORY_OBJECTIVE, column, rows), &
+                     ASP_OK, 'asp_solver_get_history(OBJECTIVE)')
+  call expect(all(ieee_is_finite(column)), 'the objective column is finite')
+  call expect_status(asp_solver_get_history(solver, ASP_HISTORY_CONTACT_FRACTION, column, rows), &
+                     ASP_OK, 'asp_solver_get_history(CONTACT_FRACTION)')
+  call expect(all(column >= 0 .and. column <= 1), 'the contact fraction column is in [0, 1]')
+  call expect_status(asp_solver_get_history(solver, ASP_FIELD_GAP, column, rows), &
+                     ASP_ERR_INVALID_ARGUMENT, 'a field constant as a history column')
+  call expect_status(asp_solver_get_history(solver, ASP_HISTORY_ERROR, column, rows - 1), &
+                     ASP_ERR_SIZE_MISMATCH, 'a history column with a wrong count')
+  deallocate (column, seconds, errors, evaluations, transforms)
+  call expect_status(asp_system_get(system, ASP_MEAN_PRESSURE, scalar), ASP_OK, &
+                     'the mean pressure after a cancelled solve')
+  call expect(ieee_is_finite(scalar), 'a cancelled solve leaves a finite state')
+
+  ! ---- the same scene, cold, to convergence, without the callback ----
+  call expect_status(asp_solver_set_progress(solver, c_null_funptr, c_null_ptr), ASP_OK, &
+                     'removing the progress callback')
+  call expect_status(asp_system_reset(system), ASP_OK, 'asp_system_reset')
+  call expect_status(asp_solver_solve(solver, system, ASP_CONTROL_MEAN_PRESSURE, mean_pressure), &
+                     ASP_OK, 'the solve to convergence')
+  call expect_status(asp_solver_termination(solver, reason), ASP_OK, 'asp_solver_termination')
+  call expect(reason == ASP_TERMINATION_CONVERGED, 'the solve ends as converged')
+  call expect_status(asp_solver_converged(solver, converged), ASP_OK, 'asp_solver_converged')
+  call expect(converged == 1, 'asp_solver_converged says 1')
+  call expect(counter%calls == cancel_after, 'a removed callback is not called')
+  call expect_status(asp_solver_iterations(solver, iterations), ASP_OK, 'asp_solver_iterations')
+  call expect(iterations >= cancel_after, 'the scene needs more iterations than the cancelled ' // &
+              'solve ran, so that the cancellation meant something')
+  call expect_status(asp_solver_final_error(solver, error), ASP_OK, 'asp_solver_final_error')
+  call expect(error <= tolerance, 'the final error meets the tolerance')
+  call expect_status(asp_solver_elapsed_seconds(solver, value), ASP_OK, &
+                     'asp_solver_elapsed_seconds')
+  call expect(value >= 0 .and. ieee_is_finite(value), 'the elapsed seconds are finite')
+  call expect_status(asp_solver_history_length(solver, rows), ASP_OK, &
+                     'asp_solver_history_length')
+  call expect(rows == iterations + 1, 'each solve starts a new history, one row per iteration')
+
+  ! ---- scalar results and a field ----
+  do k = ASP_CONTACT_FRACTION, ASP_MEAN_MODE_ENERGY
+    call expect_status(asp_system_get(system, k, scalar), ASP_OK, 'asp_system_get')
+    call expect(ieee_is_finite(scalar), 'every scalar result is finite')
+  end do
+  call expect_status(asp_system_get(system, ASP_MEAN_PRESSURE, scalar), ASP_OK, &
+                     'asp_system_get(MEAN_PRESSURE)')
+  call expect(abs(scalar - mean_pressure) <= 1d-12 * mean_pressure, &
+              'the mean pressure is the one asked for')
+  call expect_status(asp_system_get(system, ASP_TOTAL_FORCE, scalar), ASP_OK, &
+                     'asp_system_get(TOTAL_FORCE)')
+  call expect(abs(scalar - mean_pressure * box * box) <= 1d-12 * mean_pressure, &
+              'the total force is the mean pressure times the area')
+  call expect_status(asp_system_get(system, ASP_CONTACT_FRACTION, scalar), ASP_OK, &
+                     'asp_system_get(CONTACT_FRACTION)')
+  call expect(scalar > 0 .and. scalar < 0.5d0, 'a sphere touches in a small spot')
+  call expect_status(asp_system_get(system, ASP_PENETRATION, scalar), ASP_OK, &
+                     'asp_system_get(PENETRATION)')
+  call expect(scalar > 0, 'the sphere is pressed in')
+  call expect_status(asp_system_get(system, ASP_ELASTIC_ENERGY, scalar), ASP_OK, &
+                     'asp_system_get(ELASTIC_ENERGY)')
+  call expect(scalar > 0, 'the substrate stores elastic energy')
+  call expect_status(asp_system_get(system, ASP_HISTORY_ERROR, scalar), &
+                     ASP_ERR_INVALID_ARGUMENT, 'a history column as a scalar key')
+  call expect_status(asp_system_get_field(system, ASP_FIELD_PRESSURE, pressure, n * n), ASP_OK, &
+                     'asp_system_get_field(PRESSURE)')
+  call expect(minval(pressure) >= 0, 'a hard wall without adhesion pushes only')
+  call expect(abs(sum(pressure) / (n * n) - mean_pressure) <= 1d-12 * mean_pressure, &
+              'the pressure field has the mean pressure asked for')
+
+  ! ---- history off: the next solve records nothing ----
+  call expect_status(asp_solver_set_history(solver, 0_c_int), ASP_OK, &
+                     'asp_solver_set_history(0)')
+  call expect_status(asp_solver_solve(solver, system, ASP_CONTROL_MEAN_PRESSURE, mean_pressure), &
+                     ASP_OK, 'a warm solve without history')
+  call expect_status(asp_solver_history_length(solver, rows), ASP_OK, &
+                     'asp_solver_history_length')
+  call expect(rows == 0, 'no history is recorded when it is off')
+
+  ! ---- FFTW wisdom ----
+  call expect_status(asp_fft_export_wisdom_f(wisdom_file), ASP_OK, 'asp_fft_export_wisdom_f')
+  call expect_status(asp_fft_import_wisdom_f(wisdom_file), ASP_OK, 'asp_fft_import_wisdom_f')
+  call expect_status(asp_fft_import_wisdom('no/such/directory/x.wisdom' // c_null_char), &
+                     ASP_ERR_IO, 'asp_fft_import_wisdom of a missing file')
+  call expect(index(asp_last_error_text(), 'no/such/directory/x.wisdom') > 0, &
+              'the message names the path: ' // asp_last_error_text())
+  open (newunit=unit, file=wisdom_file, status='old', iostat=status)
+  if (status == 0) close (unit, status='delete')
+
+  call asp_solver_destroy(solver)
+  call asp_system_destroy(system)
+  call asp_grid_destroy(grid)
+  deallocate (heights, pressure, text, names)
+
+  if (failures > 0) then
+    print '(i0, a)', failures, ' checks failed'
+    error stop 1
+  end if
+  print '(a)', 'all checks passed'
+end program test_api
