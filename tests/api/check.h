@@ -57,8 +57,9 @@ static inline int check_error(int status, int expected, const char *text, const 
   ok = status == expected && check_message[0] != '\0' &&
        (text == NULL || strstr(check_message, text) != NULL);
   if (!ok)
-    fprintf(stderr, "%s:%d: status %d (want %d), message '%s' (want it to contain '%s')\n", file,
-            line, status, expected, check_message, text != NULL ? text : "");
+    fprintf(stderr, "%s:%d: status %d (want %d), message '%s' (want %s%s%s)\n", file, line,
+            status, expected, check_message, text != NULL ? "it to contain '" : "any message",
+            text != NULL ? text : "", text != NULL ? "'" : "");
   return check_record(ok, file, line, call);
 }
 #define CHECK_ERROR(call, expected, text) \
