@@ -439,9 +439,16 @@ static void test_texts(void) {
   CHECK(strncmp(text, "pk\n", 3) == 0 || strstr(text, "\npk\n") != NULL);
   CHECK(length > 0 && text[length - 1] == '\n');
 
-  /* asp_solver_describe lists each option with its type, default and range; every option it
-   * lists can be read by name. */
+  /* asp_solver_describe names what "pk" serves (both controls, the periodic substrate, the
+   * hard wall) and lists each option with its type, default and range; every option it lists
+   * can be read by name. */
   CHECK_OK(asp_solver_describe(solver, text, sizeof text, &length));
+  CHECK(strstr(text, "pk") != NULL);
+  CHECK(strstr(text, "mean_pressure") != NULL || strstr(text, "mean pressure") != NULL);
+  CHECK(strstr(text, "penetration") != NULL);
+  CHECK(strstr(text, "periodic") != NULL);
+  CHECK(strstr(text, "hard wall") != NULL);
+  CHECK(strstr(text, "real") != NULL && strstr(text, "integer") != NULL);
   CHECK(strstr(text, "tolerance") != NULL);
   CHECK(strstr(text, "max_iterations") != NULL);
   CHECK(strstr(text, "stall_window") != NULL);
