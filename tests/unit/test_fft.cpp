@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <ostream>
 #include <string>
 
 #include "core/random.hpp"
@@ -13,6 +14,11 @@ struct Shape {
   int dimension;
   std::int64_t nx, ny;
 };
+
+// Readable parameters in test listings and failure messages (gtest would print raw bytes).
+void PrintTo(const Shape &s, std::ostream *os) {
+  *os << s.dimension << "D " << s.nx << "x" << s.ny;
+}
 
 class FftRoundTrip : public ::testing::TestWithParam<Shape> {};
 

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,12 @@ struct RoughCase {
   std::int64_t nx, ny;
   asp::RoughnessNorm norm;
 };
+
+// Readable parameters in test listings and failure messages (gtest would print raw bytes).
+void PrintTo(const RoughCase &c, std::ostream *os) {
+  *os << c.nx << "x" << c.ny << ", "
+      << (c.norm == asp::RoughnessNorm::rms_height ? "rms height" : "rms slope");
+}
 
 class SelfAffine : public ::testing::TestWithParam<RoughCase> {};
 
