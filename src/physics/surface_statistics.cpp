@@ -13,14 +13,18 @@ void for_each_mode(const Grid &grid, const double *heights, Visit visit) {
   Spectrum s = grid.make_spectrum();
   grid.fft().forward(heights, s.data());
   const double n = static_cast<double>(grid.n_pixels());
-  const std::int64_t snx = grid.spectral_nx();
-  for (std::int64_t ky = 0; ky < grid.ny(); ++ky)
-    for (std::int64_t kx = 0; kx < snx; ++kx) {
-      if (kx == 0 && ky == 0) continue;
-      const double qx = grid.qx(kx), qy = grid.qy(ky);
-      const double power = std::norm(s[static_cast<std::size_t>(kx + snx * ky)]) / (n * n);
-      visit(std::sqrt(qx * qx + qy * qy), power, grid.hermitian_weight(kx));
-    }
+  grid.half_spectrum().for_each([&](std::int64_t k, double q, double weight) {
+    if (q == 0.0) return;  // the mean, the only entry at q = 0
+    visit(q, std::norm(s[static_cast<std::size_t>(k)]) / (n * n), weight);
+  });
+}
+
+// The largest |q| of the grid's half spectrum (0 for a single pixel).
+double largest_wavevector(const Grid &grid) {
+  double q_max = 0.0;
+  grid.half_spectrum().for_each(
+      [&](std::int64_t, double q, double) { q_max = std::fmax(q_max, q); });
+  return q_max;
 }
 
 }  // namespace
@@ -43,9 +47,7 @@ SurfaceStatistics surface_statistics(const Grid &grid, const double *heights) {
 
 void radial_power_spectrum(const Grid &grid, const double *heights, std::int64_t n_bins,
                            double *q, double *c) {
-  const double qx_max = grid.qx(grid.nx() / 2);
-  const double qy_max = grid.dimension() == 2 ? std::fabs(grid.qy(grid.ny() / 2)) : 0.0;
-  const double q_max = std::sqrt(qx_max * qx_max + qy_max * qy_max);
+  const double q_max = largest_wavevector(grid);
   const double width = q_max > 0.0 ? q_max / static_cast<double>(n_bins) : 1.0;
   // C(q) = A/(2 pi)^2 |h^_q|^2 in 2D and L/(2 pi) |h^_q|^2 in 1D: then the sum of C over the
   // modes times the area of one mode in q-space, (2 pi)^2/A or 2 pi/L, is the mean square.

@@ -107,20 +107,16 @@ void self_affine_topography(const Grid &grid, const SelfAffineParameters &p, dou
   const double exponent = -0.5 * (2.0 + 2.0 * p.hurst);  // amplitude ~ sqrt(C)
   Spectrum s = grid.make_spectrum();
   grid.fft().forward(noise.data(), s.data());
-  const std::int64_t snx = grid.spectral_nx();
   bool any_mode = false;
-  for (std::int64_t ky = 0; ky < grid.ny(); ++ky)
-    for (std::int64_t kx = 0; kx < snx; ++kx) {
-      const double qx = grid.qx(kx), qy = grid.qy(ky);
-      const double q = std::sqrt(qx * qx + qy * qy);
-      double amplitude = 0.0;
-      // Small relative slack so that a cutoff placed exactly on a grid wavevector keeps it.
-      if (q > 0.0 && q >= q_l * (1 - 1e-12) && q <= q_s * (1 + 1e-12)) {
-        amplitude = q < q_r ? 1.0 : std::pow(q / q_r, exponent);
-        any_mode = true;
-      }
-      s[static_cast<std::size_t>(kx + snx * ky)] *= amplitude;
+  grid.half_spectrum().for_each([&](std::int64_t k, double q, double) {
+    double amplitude = 0.0;
+    // Small relative slack so that a cutoff placed exactly on a grid wavevector keeps it.
+    if (q > 0.0 && q >= q_l * (1 - 1e-12) && q <= q_s * (1 + 1e-12)) {
+      amplitude = q < q_r ? 1.0 : std::pow(q / q_r, exponent);
+      any_mode = true;
     }
+    s[static_cast<std::size_t>(k)] *= amplitude;
+  });
   if (!any_mode)
     throw Error(Status::invalid_argument,
                 "arguments 'long_cutoff' and 'short_cutoff': no wavevector of the grid lies "
