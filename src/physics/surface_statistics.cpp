@@ -3,6 +3,8 @@
 #include <cmath>
 #include <vector>
 
+#include "core/loops.hpp"
+
 namespace asp {
 namespace {
 
@@ -10,8 +12,12 @@ namespace {
 // divided by N, modes the number of full-spectrum modes the entry stands for (1 or 2).
 template <class Visit>
 void for_each_mode(const Grid &grid, const double *heights, Visit visit) {
+  // FFTW plans run only on the library's own aligned fields: the caller's array may start
+  // anywhere (a NumPy slice, a Fortran section), so it is copied first.
+  Field h = grid.make_field();
+  loops::for_each(grid.n_pixels(), [&](std::int64_t i) { h[i] = heights[i]; });
   Spectrum s = grid.make_spectrum();
-  grid.fft().forward(heights, s.data());
+  grid.fft().forward(h.data(), s.data());
   const double n = static_cast<double>(grid.n_pixels());
   grid.half_spectrum().for_each([&](std::int64_t k, double q, double weight) {
     if (q == 0.0) return;  // the mean, the only entry at q = 0

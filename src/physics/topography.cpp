@@ -4,6 +4,7 @@
 
 #include "core/checks.hpp"
 #include "core/error.hpp"
+#include "core/loops.hpp"
 #include "core/random.hpp"
 #include "physics/surface_statistics.hpp"
 
@@ -96,17 +97,19 @@ void self_affine_topography(const Grid &grid, const SelfAffineParameters &p, dou
   require_positive(p.target, "target");
 
   // White noise in a fixed order, then filtered by sqrt(C(q)) in Fourier space: the spectrum
-  // is Hermitian by construction, for odd and even sizes alike.
+  // is Hermitian by construction, for odd and even sizes alike. The surface is made in the
+  // library's own aligned field, where FFTW plans may run, and copied out at the end: the
+  // caller's array may start anywhere (a NumPy slice, a Fortran section).
   const std::int64_t n = grid.n_pixels();
   Random random(p.seed);
-  Field noise = grid.make_field();
-  for (std::int64_t k = 0; k < n; ++k) noise[static_cast<std::size_t>(k)] = random.gaussian();
+  Field surface = grid.make_field();
+  for (std::int64_t k = 0; k < n; ++k) surface[static_cast<std::size_t>(k)] = random.gaussian();
 
   const double q_l = two_pi / p.long_cutoff, q_r = two_pi / p.rolloff;
   const double q_s = two_pi / p.short_cutoff;
   const double exponent = -0.5 * (2.0 + 2.0 * p.hurst);  // amplitude ~ sqrt(C)
   Spectrum s = grid.make_spectrum();
-  grid.fft().forward(noise.data(), s.data());
+  grid.fft().forward(surface.data(), s.data());
   bool any_mode = false;
   grid.half_spectrum().for_each([&](std::int64_t k, double q, double) {
     double amplitude = 0.0;
@@ -121,13 +124,13 @@ void self_affine_topography(const Grid &grid, const SelfAffineParameters &p, dou
     throw Error(Status::invalid_argument,
                 "arguments 'long_cutoff' and 'short_cutoff': no wavevector of the grid lies "
                 "between 2 pi/long_cutoff and 2 pi/short_cutoff");
-  grid.fft().backward(s.data(), heights);
+  grid.fft().backward(s.data(), surface.data());
 
-  const SurfaceStatistics stats = surface_statistics(grid, heights);
+  const SurfaceStatistics stats = surface_statistics(grid, surface.data());
   const double measured =
       p.norm == RoughnessNorm::rms_height ? stats.rms_height : stats.rms_slope;
   const double scale = p.target / measured;
-  for (std::int64_t k = 0; k < n; ++k) heights[k] *= scale;
+  loops::for_each(n, [&](std::int64_t k) { heights[k] = surface[k] * scale; });
 }
 
 }  // namespace asp
