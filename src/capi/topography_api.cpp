@@ -90,7 +90,6 @@ int asp_topography_power_spectrum(const asp_grid *grid, const double *heights, i
   return guarded("asp_topography_power_spectrum", [&] {
     const asp::Grid &g = grid_for(grid, heights, n);
     asp::require_finite_array(heights, n, "heights");
-    asp::require_at_least(n_bins, 1, "n_bins");
     asp::require_not_null(q, "q");
     asp::require_not_null(c, "c");
     asp::radial_power_spectrum(g, heights, n_bins, q, c);

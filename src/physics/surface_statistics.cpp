@@ -1,8 +1,12 @@
 #include "physics/surface_statistics.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <string>
 #include <vector>
 
+#include "core/error.hpp"
 #include "core/loops.hpp"
 
 namespace asp {
@@ -20,7 +24,7 @@ void for_each_mode(const Grid &grid, const double *heights, Visit visit) {
   grid.fft().forward(h.data(), s.data());
   const double n = static_cast<double>(grid.n_pixels());
   grid.half_spectrum().for_each([&](std::int64_t k, double q, double weight) {
-    if (q == 0.0) return;  // the mean, the only entry at q = 0
+    if (k == 0) return;  // the mean, stored first
     visit(q, std::norm(s[static_cast<std::size_t>(k)]) / (n * n), weight);
   });
 }
@@ -31,6 +35,31 @@ double largest_wavevector(const Grid &grid) {
   grid.half_spectrum().for_each(
       [&](std::int64_t, double q, double) { q_max = std::fmax(q_max, q); });
   return q_max;
+}
+
+void require_bin_count(const Grid &grid, std::int64_t n_bins) {
+  if (n_bins < 1 || n_bins > grid.n_pixels())
+    throw Error(Status::invalid_argument,
+                "argument 'n_bins' must lie between 1 and the number of pixels, " +
+                    std::to_string(grid.n_pixels()) + " (more bins than modes stay empty), got " +
+                    std::to_string(n_bins));
+}
+
+// The bin of a mode of magnitude q in [0, q_max]. q/q_max lies in [0, 1], so the position is
+// finite and at most n_bins on any grid and its conversion to an integer is defined; q_max
+// itself lands on the upper edge and goes into the last bin.
+std::int64_t bin_of(double q, double q_max, std::int64_t n_bins) {
+  const double position = q_max > 0.0 ? q / q_max * static_cast<double>(n_bins) : 0.0;
+  if (!(position < static_cast<double>(n_bins))) return n_bins - 1;
+  return std::min(static_cast<std::int64_t>(position), n_bins - 1);
+}
+
+// Reductions take an int count: any number of bins is combined in pieces.
+void combine_sums(const Reductions &reductions, std::vector<double> &values) {
+  const std::size_t piece = static_cast<std::size_t>(std::numeric_limits<int>::max());
+  for (std::size_t start = 0; start < values.size(); start += piece)
+    reductions.combine_sums(values.data() + start,
+                            static_cast<int>(std::min(piece, values.size() - start)));
 }
 
 }  // namespace
@@ -53,6 +82,7 @@ SurfaceStatistics surface_statistics(const Grid &grid, const double *heights) {
 
 void radial_power_spectrum(const Grid &grid, const double *heights, std::int64_t n_bins,
                            double *q, double *c) {
+  require_bin_count(grid, n_bins);
   const double q_max = largest_wavevector(grid);
   const double width = q_max > 0.0 ? q_max / static_cast<double>(n_bins) : 1.0;
   // C(q) = A/(2 pi)^2 |h^_q|^2 in 2D and L/(2 pi) |h^_q|^2 in 1D: then the sum of C over the
@@ -63,16 +93,14 @@ void radial_power_spectrum(const Grid &grid, const double *heights, std::int64_t
   const std::size_t bins = static_cast<std::size_t>(n_bins);
   std::vector<double> sum_q(bins, 0.0), sum_c(bins, 0.0), count(bins, 0.0);
   for_each_mode(grid, heights, [&](double qn, double power, double modes) {
-    std::int64_t b = static_cast<std::int64_t>(qn / width);
-    if (b >= n_bins) b = n_bins - 1;  // q_max itself lands on the upper edge
-    const std::size_t k = static_cast<std::size_t>(b);
+    const std::size_t k = static_cast<std::size_t>(bin_of(qn, q_max, n_bins));
     sum_q[k] += modes * qn;
     sum_c[k] += modes * density * power;
     count[k] += modes;
   });
-  grid.reductions().combine_sums(sum_q.data(), static_cast<int>(bins));
-  grid.reductions().combine_sums(sum_c.data(), static_cast<int>(bins));
-  grid.reductions().combine_sums(count.data(), static_cast<int>(bins));
+  combine_sums(grid.reductions(), sum_q);
+  combine_sums(grid.reductions(), sum_c);
+  combine_sums(grid.reductions(), count);
   for (std::size_t b = 0; b < bins; ++b) {
     if (count[b] > 0.0) {
       q[b] = sum_q[b] / count[b];

@@ -16,7 +16,9 @@ struct SurfaceStatistics {
 
 SurfaceStatistics surface_statistics(const Grid &grid, const double *heights);
 
-// Radially averaged power spectrum, see asp_topography_power_spectrum in the public header.
+// Radially averaged power spectrum into q and c, n_bins doubles each; see
+// asp_topography_power_spectrum in the public header. Throws Error(invalid_argument) naming
+// 'n_bins' unless 1 <= n_bins <= grid.n_pixels().
 void radial_power_spectrum(const Grid &grid, const double *heights, std::int64_t n_bins,
                            double *q, double *c);
 

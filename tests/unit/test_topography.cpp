@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
+#include <memory>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -13,6 +15,26 @@
 
 namespace {
 using asp_test::pi;
+
+// Runs call and expects a refusal: Error(invalid_argument) whose message names the argument.
+template <class Call>
+void expect_refused(Call &&call, const std::string &argument) {
+  try {
+    call();
+    ADD_FAILURE() << "accepted; expected a refusal naming '" << argument << "'";
+  } catch (const asp::Error &e) {
+    EXPECT_EQ(e.status(), asp::Status::invalid_argument) << e.what();
+    EXPECT_NE(std::string(e.what()).find("'" + argument + "'"), std::string::npos) << e.what();
+  } catch (const std::exception &e) {
+    ADD_FAILURE() << "threw something other than asp::Error: " << e.what();
+  }
+}
+
+bool all_finite(const std::vector<double> &values) {
+  for (double v : values)
+    if (!std::isfinite(v)) return false;
+  return true;
+}
 
 TEST(Statistics, SinusoidHasTheAnalyticRmsValues) {
   // h = h0 cos(q x): rms h0/sqrt2, slope h0 q/sqrt2, curvature h0 q^2/sqrt2 (1D) and, for
@@ -163,6 +185,48 @@ TEST(PowerSpectrum, IntegratesToTheMeanSquareHeight) {
     const double modes = static_cast<double>(grid->n_pixels() - 1);
     const double cell = grid->dimension() == 2 ? 4 * pi * pi / grid->area() : 2 * pi / grid->lx();
     EXPECT_NEAR(c * modes * cell, 0.04, 1e-12);
+  }
+}
+
+TEST(PowerSpectrum, BinCountLiesBetweenOneAndThePixelCount) {
+  // More bins than pixels would only add empty bins; the count also sizes internal arrays,
+  // so a huge one must be refused, not attempted. A refusal leaves q and c as they were.
+  auto grid = asp_test::grid_2d(16, 12, 1.0, 1.0);
+  std::vector<double> h(16 * 12);
+  asp::sinusoid_topography(*grid, 0.1, 2, 1, h.data());
+  std::vector<double> q(200, -7.0), c(200, -7.0);
+  for (std::int64_t bins : {std::int64_t{0}, std::int64_t{-3}, std::int64_t{16 * 12 + 1},
+                            std::numeric_limits<std::int64_t>::max()}) {
+    expect_refused([&] { asp::radial_power_spectrum(*grid, h.data(), bins, q.data(), c.data()); },
+                   "n_bins");
+    EXPECT_EQ(q, std::vector<double>(200, -7.0));
+    EXPECT_EQ(c, std::vector<double>(200, -7.0));
+  }
+  EXPECT_NO_THROW(asp::radial_power_spectrum(*grid, h.data(), 16 * 12, q.data(), c.data()));
+}
+
+TEST(PowerSpectrum, EveryModeLandsInItsBinOnExtremeBoxes) {
+  // The bin of a mode comes from |q|/q_max, which lies in (0, 1] on any grid, so the index is
+  // in range however small or large the wavevectors are; each bin's mean |q| then lies inside
+  // the bin (to round-off) and every output is finite. (Boxes longer than about 1e150 are left
+  // out: there the spectral layout's |q|^2 underflows and every |q| reads 0.)
+  std::shared_ptr<asp::Grid> grids[] = {
+      asp_test::grid_1d(64, 1e140), asp_test::grid_1d(64, 1e-140),
+      asp_test::grid_2d(16, 8, 1e150, 1e-140), asp_test::grid_2d(9, 7, 3.0, 1e-100)};
+  for (const auto &grid : grids) {
+    std::vector<double> h(static_cast<std::size_t>(grid->n_pixels()));
+    for (std::size_t i = 0; i < h.size(); ++i) h[i] = std::sin(0.7 * i) + 0.1 * (i % 5);
+    const std::int64_t bins = grid->n_pixels();
+    std::vector<double> q(static_cast<std::size_t>(bins)), c(q.size());
+    asp::radial_power_spectrum(*grid, h.data(), bins, q.data(), c.data());
+    EXPECT_TRUE(all_finite(q) && all_finite(c));
+    const double q_max = 2 * pi * std::hypot((grid->nx() / 2) / grid->lx(),
+                                             (grid->ny() / 2) / grid->ly());
+    const double width = q_max / bins;
+    for (std::int64_t b = 0; b < bins; ++b) {
+      EXPECT_GE(q[b], b * width * (1 - 1e-12)) << b;
+      EXPECT_LE(q[b], (b + 1) * width * (1 + 1e-12)) << b;
+    }
   }
 }
 
