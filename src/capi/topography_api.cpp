@@ -78,10 +78,7 @@ int asp_topography_statistics(const asp_grid *grid, const double *heights, int64
   return guarded("asp_topography_statistics", [&] {
     const asp::Grid &g = grid_for(grid, heights, n);
     asp::require_finite_array(heights, n, "heights");
-    const asp::SurfaceStatistics s = asp::surface_statistics(g, heights);
-    if (rms_height) *rms_height = s.rms_height;
-    if (rms_slope) *rms_slope = s.rms_slope;
-    if (rms_curvature) *rms_curvature = s.rms_curvature;
+    asp::surface_statistics(g, heights, rms_height, rms_slope, rms_curvature);
   });
 }
 

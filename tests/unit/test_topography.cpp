@@ -1,6 +1,7 @@
 // Topographies and their statistics.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -228,6 +229,147 @@ TEST(PowerSpectrum, EveryModeLandsInItsBinOnExtremeBoxes) {
       EXPECT_LE(q[b], (b + 1) * width * (1 + 1e-12)) << b;
     }
   }
+}
+
+// Every output is finite, or the call is refused naming the argument and leaves the caller's
+// array as it was.
+
+TEST(FiniteOutputs, SphereOfHugeRadiusIsFinite) {
+  // sqrt(R^2 - r^2) - R overflows in R^2 for R = 1e200; -r^2/(R + sqrt(R^2 - r^2)) does not.
+  auto grid = asp_test::grid_2d(64, 64, 1.0, 1.0);
+  std::vector<double> h(64 * 64);
+  asp::sphere_topography(*grid, 1e200, h.data());
+  EXPECT_TRUE(all_finite(h));
+  EXPECT_EQ(h[32 + 64 * 32], 0.0);                   // the apex, at the centre
+  EXPECT_NEAR(h[0], -0.5 / 2e200, 1e-15 * 0.5 / 2e200);  // corner: r^2 = 1/2, h = -r^2/(2R)
+}
+
+TEST(FiniteOutputs, ParaboloidDeeperThanDoublesIsRefused) {
+  // Depth r^2/(2R) at the corner: 0.5/1.2e-321 overflows; on a 1e200 box r^2 itself does.
+  auto grid = asp_test::grid_2d(64, 64, 1.0, 1.0);
+  auto long_line = asp_test::grid_1d(8, 1e200);
+  std::vector<double> h(64 * 64, 7.0);
+  expect_refused([&] { asp::paraboloid_topography(*grid, 6e-322, h.data()); }, "radius");
+  expect_refused([&] { asp::paraboloid_topography(*long_line, 1.0, h.data()); }, "radius");
+  EXPECT_EQ(h, std::vector<double>(64 * 64, 7.0));
+  asp::paraboloid_topography(*grid, 1e-300, h.data());  // deep, but representable
+  EXPECT_TRUE(all_finite(h));
+}
+
+TEST(FiniteOutputs, DoubleSinewaveWhoseAmplitudesOverflowIsRefused) {
+  // At x = 0 both cosines are 1: the heights reach |amplitude| + |ripple_amplitude|.
+  auto grid = asp_test::grid_1d(256, 1.0);
+  std::vector<double> h(256, 7.0);
+  const double huge = std::numeric_limits<double>::max();
+  expect_refused([&] { asp::double_sinewave_topography(*grid, huge, huge, 32, h.data()); },
+                 "amplitude");
+  expect_refused([&] { asp::double_sinewave_topography(*grid, -huge, 1e300, 32, h.data()); },
+                 "ripple_amplitude");
+  EXPECT_EQ(h, std::vector<double>(256, 7.0));
+  asp::double_sinewave_topography(*grid, huge, 0.05, 32, h.data());  // huge + 0.05 = huge
+  EXPECT_TRUE(all_finite(h));
+}
+
+TEST(FiniteOutputs, SinusoidOnExtremeBoxesIsFinite) {
+  // Boxes so short that 2 pi/lx overflows cannot be made (Grid::create refuses them); boxes
+  // so long that lx*i overflows can, and the phase must not go through lx*i.
+  EXPECT_THROW(asp::Grid::create(1, 8, 1, 1e-300, 1.0), asp::Error);
+  EXPECT_THROW(asp::Grid::create(2, 8, 8, 4.9e-324, 1.0), asp::Error);
+  auto long_line = asp_test::grid_1d(8, 1e308);
+  std::vector<double> h(8);
+  asp::sinusoid_topography(*long_line, 1.0, 1, 0, h.data());
+  EXPECT_TRUE(all_finite(h));
+  EXPECT_NEAR(h[4], -1.0, 1e-15);
+  auto short_line = asp_test::grid_1d(2, 1.3e-149);  // about the shortest box of 2 pixels
+  asp::sinusoid_topography(*short_line, 1.0, std::numeric_limits<std::int64_t>::max(), 0,
+                           h.data());
+  EXPECT_TRUE(std::isfinite(h[0]) && std::isfinite(h[1]));
+  auto flat_box = asp_test::grid_2d(8, 4, 1e308, 1e-10);
+  std::vector<double> h2(32);
+  asp::sinusoid_topography(*flat_box, 2.0, 3, 1, h2.data());
+  EXPECT_TRUE(all_finite(h2));
+  EXPECT_NEAR(h2[0], 2.0, 1e-15);
+}
+
+TEST(FiniteOutputs, SelfAffineTargetThatOverflowsIsRefused) {
+  auto grid = asp_test::grid_2d(64, 64, 1.0, 1.0);
+  asp::SelfAffineParameters p;
+  p.long_cutoff = 1.0;
+  p.rolloff = 0.5;
+  p.short_cutoff = 0.1;
+  p.target = 1e308;
+  std::vector<double> h(64 * 64, 7.0);
+  // An rms height of 1e308 puts Gaussian peaks beyond the largest double.
+  p.norm = asp::RoughnessNorm::rms_height;
+  expect_refused([&] { asp::self_affine_topography(*grid, p, h.data()); }, "target");
+  EXPECT_EQ(h, std::vector<double>(64 * 64, 7.0));
+  // An rms slope of 1e308 on a unit box needs heights of about 1e307: representable, and
+  // the statistics of that surface are too.
+  p.norm = asp::RoughnessNorm::rms_slope;
+  asp::self_affine_topography(*grid, p, h.data());
+  EXPECT_TRUE(all_finite(h));
+  const asp::SurfaceStatistics s = asp::surface_statistics(*grid, h.data());
+  EXPECT_NEAR(s.rms_slope / 1e308, 1.0, 1e-12);
+  EXPECT_TRUE(std::isfinite(s.rms_height));
+}
+
+TEST(FiniteOutputs, StatisticsOfTallOrFineSurfacesAreFinite) {
+  // Squares of heights of 1e200, and q^4 = 5e598 on the finest box of 2 pixels, overflow;
+  // the statistics themselves do not.
+  auto grid = asp_test::grid_2d(64, 64, 1.0, 1.0);
+  std::vector<double> h(64 * 64);
+  double sum = 0.0, sum2 = 0.0;
+  for (std::size_t i = 0; i < h.size(); ++i) {
+    const double v = static_cast<double>(i % 3);
+    h[i] = v * 1e200;
+    sum += v, sum2 += v * v;
+  }
+  const double mean = sum / h.size(), rms = std::sqrt(sum2 / h.size() - mean * mean);
+  const asp::SurfaceStatistics tall = asp::surface_statistics(*grid, h.data());
+  EXPECT_NEAR(tall.rms_height / 1e200, rms, 1e-12);
+  EXPECT_TRUE(std::isfinite(tall.rms_slope) && std::isfinite(tall.rms_curvature));
+
+  // h = +1, -1: one mode at the Nyquist q = pi nx/lx, rms 1, slope q, curvature q^2 (1D).
+  const double lx = 1.3e-149, q = pi * 2 / lx;
+  auto fine = asp_test::grid_1d(2, lx);
+  const double pair[2] = {1.0, -1.0};
+  const asp::SurfaceStatistics s = asp::surface_statistics(*fine, pair);
+  EXPECT_NEAR(s.rms_height, 1.0, 1e-15);
+  EXPECT_NEAR(s.rms_slope / q, 1.0, 1e-15);
+  EXPECT_NEAR(s.rms_curvature / (q * q), 1.0, 1e-15);
+}
+
+TEST(FiniteOutputs, StatisticsThatOverflowAreRefusedWhenAskedFor) {
+  // On the finest 2-pixel box, heights of +-1e10 have an rms curvature of 2.3e309.
+  auto fine = asp_test::grid_1d(2, 1.3e-149);
+  const double pair[2] = {1e10, -1e10};
+  double height = -7.0, slope = -7.0, curvature = -7.0;
+  expect_refused([&] { asp::surface_statistics(*fine, pair, &height, &slope, &curvature); },
+                 "heights");
+  EXPECT_EQ(height, -7.0);
+  EXPECT_EQ(slope, -7.0);
+  EXPECT_EQ(curvature, -7.0);
+  asp::surface_statistics(*fine, pair, &height, &slope, nullptr);  // not asked: no refusal
+  EXPECT_EQ(height, 1e10);
+  EXPECT_TRUE(std::isfinite(slope));
+}
+
+TEST(FiniteOutputs, PowerSpectrumIsFiniteOrRefused) {
+  // C = A/(2 pi)^2 |h^|^2: heights of 1e157 on a box of 1e-3 give C ~ 1e306, though
+  // |FFT h|^2 ~ 1e321 overflows on the way; heights of 1e200 on a unit box give C ~ 1e398.
+  std::vector<double> h(64 * 64), q(8, -7.0), c(8, -7.0);
+  for (std::size_t i = 0; i < h.size(); ++i) h[i] = std::sin(0.3 * i) * 1e157;
+  auto small = asp_test::grid_2d(64, 64, 1e-3, 1e-3);
+  asp::radial_power_spectrum(*small, h.data(), 8, q.data(), c.data());
+  EXPECT_TRUE(all_finite(q) && all_finite(c));
+  for (double &v : h) v *= 1e43;
+  std::fill(q.begin(), q.end(), -7.0);
+  std::fill(c.begin(), c.end(), -7.0);
+  auto unit = asp_test::grid_2d(64, 64, 1.0, 1.0);
+  expect_refused([&] { asp::radial_power_spectrum(*unit, h.data(), 8, q.data(), c.data()); },
+                 "heights");
+  EXPECT_EQ(q, std::vector<double>(8, -7.0));
+  EXPECT_EQ(c, std::vector<double>(8, -7.0));
 }
 
 TEST(Topography, SphereAndParaboloidAgreeNearTheApex) {
