@@ -137,7 +137,11 @@ void self_affine_topography(const Grid &grid, const SelfAffineParameters &p, dou
 
   const double q_l = two_pi / p.long_cutoff, q_r = two_pi / p.rolloff;
   const double q_s = two_pi / p.short_cutoff;
-  const double exponent = -0.5 * (2.0 + 2.0 * p.hurst);  // amplitude ~ sqrt(C)
+  // C(q) ~ q^(-2-2H) on a surface, q^(-1-2H) on a profile (the field's convention, so that a
+  // Hurst exponent means the same roughness in 1D and 2D); the amplitude goes as sqrt(C).
+  const double spectral_exponent = grid.dimension() == 2 ? -2.0 - 2.0 * p.hurst
+                                                         : -1.0 - 2.0 * p.hurst;
+  const double exponent = 0.5 * spectral_exponent;
   Spectrum s = grid.make_spectrum();
   grid.fft().forward(surface.data(), s.data());
   bool any_mode = false;
