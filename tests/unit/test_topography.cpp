@@ -201,7 +201,7 @@ INSTANTIATE_TEST_SUITE_P(Conventions, SelfAffineSpectrum,
                          ::testing::Values(SpectrumCase{1, 0.3}, SpectrumCase{1, 0.8},
                                            SpectrumCase{2, 0.3}, SpectrumCase{2, 0.8}),
                          [](const ::testing::TestParamInfo<SpectrumCase> &info) {
-                           return std::to_string(info.param.dimension) + "D_hurst_" +
+                           return std::to_string(info.param.dimension) + "D_hurst_0_" +
                                   std::to_string(static_cast<int>(10 * info.param.hurst));
                          });
 
