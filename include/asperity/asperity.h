@@ -166,24 +166,32 @@ ASP_EXPORT int asp_fft_import_wisdom(const char *path);
 
 /* ============================================================================================
  * Topographies: functions that fill a caller's array of n = nx*ny heights on a grid.
- * Caller arrays need no particular alignment (NumPy slices and Fortran sections are fine).
+ * Caller arrays, inputs and outputs alike, need no particular alignment: NumPy slices (a[1:])
+ * and Fortran array sections are fine, because the library copies them into its own buffers
+ * before any Fourier transform. Every output is finite: a request whose numbers doubles
+ * cannot hold is refused with ASP_ERR_INVALID_ARGUMENT naming the argument, as each function
+ * says below. A call that fails writes nothing: the caller's arrays and output variables
+ * keep what they held.
  * ========================================================================================== */
 
 /* h = 0 everywhere. */
 ASP_EXPORT int asp_topography_flat(const asp_grid *grid, double *heights, int64_t n);
 
 /* A true sphere of radius R centred on the box (at x = lx/2, y = ly/2), apex at h = 0:
- * h = sqrt(R^2 - r^2) - R for r <= R and h = -R outside. In 1D, a cylinder (r = |x - lx/2|). */
+ * h = sqrt(R^2 - r^2) - R for r <= R and h = -R outside. In 1D, a cylinder (r = |x - lx/2|).
+ * Finite for every radius > 0. */
 ASP_EXPORT int asp_topography_sphere(const asp_grid *grid, double radius, double *heights,
                                      int64_t n);
 
-/* The paraboloid h = -r^2/(2R) centred like the sphere: what Hertz theory assumes. */
+/* The paraboloid h = -r^2/(2R) centred like the sphere: what Hertz theory assumes. Refused
+ * ('radius') when the depth at the corners of the box, (lx^2 + ly^2)/(8R) (lx^2/(8R) in 1D),
+ * overflows a double. */
 ASP_EXPORT int asp_topography_paraboloid(const asp_grid *grid, double radius, double *heights,
                                          int64_t n);
 
 /* h = amplitude * cos(2 pi periods_x x/lx) * cos(2 pi periods_y y/ly). periods_x >= 1 and
  * periods_y >= 0 are whole numbers so that the surface is periodic; periods_y = 0 gives a
- * sinusoid along x only (the only choice on a 1D grid). */
+ * sinusoid along x only (the only choice on a 1D grid). |h| <= |amplitude| on every grid. */
 ASP_EXPORT int asp_topography_sinusoid(const asp_grid *grid, double amplitude, int64_t periods_x,
                                        int64_t periods_y, double *heights, int64_t n);
 
@@ -191,21 +199,26 @@ ASP_EXPORT int asp_topography_sinusoid(const asp_grid *grid, double amplitude, i
  * one long wave over the box plus a ripple,
  *   h = amplitude * cos(2 pi x/lx) + ripple_amplitude * cos(2 pi ripple_periods x/lx),
  * constant along y. The thesis's scene is amplitude 1, ripple_amplitude 0.05,
- * ripple_periods 32, lx = 1. */
+ * ripple_periods 32, lx = 1. Refused ('amplitude' and 'ripple_amplitude') when
+ * |amplitude| + |ripple_amplitude|, the bound of |h|, overflows a double. */
 ASP_EXPORT int asp_topography_double_sinewave(const asp_grid *grid, double amplitude,
                                               double ripple_amplitude, int64_t ripple_periods,
                                               double *heights, int64_t n);
 
-/* A self-affine Gaussian random surface. Its isotropic power spectrum is
+/* A self-affine Gaussian random surface. Its isotropic power spectrum is, on a 2D grid,
  *   C(q) = 0                        for q < q_l      (q_l = 2 pi/long_cutoff)
  *   C(q) = C0                       for q_l <= q < q_r (q_r = 2 pi/rolloff)
  *   C(q) = C0 (q/q_r)^(-2-2 hurst)   for q_r <= q <= q_s (q_s = 2 pi/short_cutoff)
  *   C(q) = 0                        for q > q_s,
- * in 2D, and the same with the exponent -1-2 hurst on a 1D grid (the convention of the field,
- * so that a Hurst exponent means the same roughness for a profile and for a surface), with the
- * wavelengths ordered short_cutoff < rolloff <= long_cutoff. C0 is chosen so that the surface
- * has exactly the requested rms height (normalise = ASP_RMS_HEIGHT) or rms slope
- * (ASP_RMS_SLOPE), as asp_topography_statistics measures them; the mean height is 0.
+ * and on a 1D grid the profile's spectrum C1D(q) is the same with the exponent -1-2 hurst:
+ * C1D(q) ~ q^(-1-2 hurst) against C(q) ~ q^(-2-2 hurst) for a surface. That is the
+ * convention of the field (Jacobs, Junge and Pastewka, Surf. Topogr. 2017): a profile cut
+ * from a surface of Hurst exponent H has Hurst exponent H, so H means the same roughness in
+ * 1D and 2D. The wavelengths are ordered short_cutoff < rolloff <= long_cutoff. C0 is chosen
+ * so that the surface has exactly the requested rms height (normalise = ASP_RMS_HEIGHT) or
+ * rms slope (ASP_RMS_SLOPE), as asp_topography_statistics measures them; the mean height is
+ * 0. A target whose surface would have heights beyond the largest double (a Gaussian surface
+ * peaks at several times its rms height) is refused ('target').
  * The surface is white noise from the seed, filtered by sqrt(C): the same seed and grid give
  * the same surface on every platform (to the last bits of the math library's cos and log). */
 #define ASP_RMS_HEIGHT 201
@@ -219,16 +232,21 @@ ASP_EXPORT int asp_topography_self_affine(const asp_grid *grid, double hurst, do
  *   rms_height^2    = <(h - mean h)^2>,
  *   rms_slope^2     = <|grad h|^2>,
  *   rms_curvature^2 = <|laplacian h|^2>/4 in 2D, <h''^2> in 1D.
- * Any output pointer may be NULL. */
+ * Any output pointer may be NULL. Any finite heights work, but a slope or curvature can
+ * itself exceed the largest double (tall heights on a very fine grid): a requested statistic
+ * that would is refused ('heights'); one not requested (NULL) never causes a refusal. */
 ASP_EXPORT int asp_topography_statistics(const asp_grid *grid, const double *heights, int64_t n,
                                          double *rms_height, double *rms_slope,
                                          double *rms_curvature);
 
 /* Radially averaged power spectrum C(q), normalised so that rms_height^2 = integral of C over
- * wavevectors (2D: d^2q; 1D: dq over positive and negative q). The range 0 < |q| <= q_max of
- * the grid is cut into n_bins equal bins (1 <= n_bins <= nx*ny); q and c are arrays of n_bins
- * doubles each, q[k] the mean |q| of the modes in bin k and c[k] their mean C; a bin without
- * modes gets q[k] = its centre and c[k] = 0. */
+ * wavevectors (2D: d^2q, C = A/(2 pi)^2 |h^_q|^2; 1D: dq over positive and negative q,
+ * C1D = lx/(2 pi) |h^_q|^2; h^ the DFT divided by nx*ny). The range 0 < |q| <= q_max of the
+ * grid is cut into n_bins equal bins, 1 <= n_bins <= nx*ny (more bins than pixels would only
+ * be empty; a count outside is refused, 'n_bins'). q and c are arrays of n_bins doubles each
+ * (their length is n_bins, not nx*ny): q[k] the mean |q| of the modes in bin k and c[k] their
+ * mean C; a bin without modes gets q[k] = its centre and c[k] = 0. A C(q) beyond the largest
+ * double (very tall heights on a large box) is refused ('heights'). */
 ASP_EXPORT int asp_topography_power_spectrum(const asp_grid *grid, const double *heights,
                                              int64_t n, int64_t n_bins, double *q, double *c);
 

@@ -78,10 +78,7 @@ int asp_topography_statistics(const asp_grid *grid, const double *heights, int64
   return guarded("asp_topography_statistics", [&] {
     const asp::Grid &g = grid_for(grid, heights, n);
     asp::require_finite_array(heights, n, "heights");
-    const asp::SurfaceStatistics s = asp::surface_statistics(g, heights);
-    if (rms_height) *rms_height = s.rms_height;
-    if (rms_slope) *rms_slope = s.rms_slope;
-    if (rms_curvature) *rms_curvature = s.rms_curvature;
+    asp::surface_statistics(g, heights, rms_height, rms_slope, rms_curvature);
   });
 }
 
@@ -90,7 +87,6 @@ int asp_topography_power_spectrum(const asp_grid *grid, const double *heights, i
   return guarded("asp_topography_power_spectrum", [&] {
     const asp::Grid &g = grid_for(grid, heights, n);
     asp::require_finite_array(heights, n, "heights");
-    asp::require_at_least(n_bins, 1, "n_bins");
     asp::require_not_null(q, "q");
     asp::require_not_null(c, "c");
     asp::radial_power_spectrum(g, heights, n_bins, q, c);

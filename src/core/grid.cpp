@@ -58,18 +58,6 @@ std::shared_ptr<Grid> Grid::create(int dimension, std::int64_t nx, std::int64_t 
 Grid::Grid(int dimension, std::int64_t nx, std::int64_t ny, double lx, double ly)
     : dimension_(dimension), nx_(nx), ny_(ny), lx_(lx), ly_(ly) {}
 
-double Grid::qx(std::int64_t kx) const { return two_pi * static_cast<double>(kx) / lx_; }
-
-double Grid::qy(std::int64_t ky) const {
-  const std::int64_t k = ky <= ny_ / 2 ? ky : ky - ny_;
-  return two_pi * static_cast<double>(k) / ly_;
-}
-
-double Grid::hermitian_weight(std::int64_t kx) const {
-  const bool self_partner = kx == 0 || (nx_ % 2 == 0 && kx == nx_ / 2);
-  return self_partner ? 1.0 : 2.0;
-}
-
 SpectralLayout Grid::half_spectrum() const {
   return SpectralLayout(Packing::half_spectrum, nx_, ny_, lx_, ly_);
 }

@@ -41,10 +41,6 @@ class Grid {
   // The r2c half spectrum of the grid: kx in [0, nx/2], ky in [0, ny).
   SpectralLayout half_spectrum() const;
   std::int64_t n_spectral() const { return (nx_ / 2 + 1) * ny_; }
-  std::int64_t spectral_nx() const { return nx_ / 2 + 1; }
-  double qx(std::int64_t kx) const;  // 2 pi kx/lx
-  double qy(std::int64_t ky) const;  // 2 pi k/ly, k = ky or ky - ny (nearest to zero)
-  double hermitian_weight(std::int64_t kx) const;
 
   Field make_field() const { return Field(static_cast<std::size_t>(n_pixels()), 0.0); }
   Spectrum make_spectrum() const { return Spectrum(static_cast<std::size_t>(n_spectral())); }

@@ -14,9 +14,20 @@ struct SurfaceStatistics {
   double rms_curvature = 0.0;  // 2D: sqrt(<(laplacian h)^2>/4); 1D: sqrt(<h''^2>)
 };
 
+// Any finite heights, at any address. A statistic whose value overflows a double is +inf
+// (never NaN); rms_height never overflows.
 SurfaceStatistics surface_statistics(const Grid &grid, const double *heights);
 
-// Radially averaged power spectrum, see asp_topography_power_spectrum in the public header.
+// The statistics whose pointers are not null, written only if all of them are finite;
+// otherwise throws Error(invalid_argument) naming 'heights' and the statistic, and writes
+// nothing. What asp_topography_statistics does.
+void surface_statistics(const Grid &grid, const double *heights, double *rms_height,
+                        double *rms_slope, double *rms_curvature);
+
+// Radially averaged power spectrum into q and c, n_bins doubles each; see
+// asp_topography_power_spectrum in the public header. Throws Error(invalid_argument) naming
+// 'n_bins' unless 1 <= n_bins <= grid.n_pixels(), or naming 'heights' if a C(q) overflows a
+// double; q and c are written only on success.
 void radial_power_spectrum(const Grid &grid, const double *heights, std::int64_t n_bins,
                            double *q, double *c);
 

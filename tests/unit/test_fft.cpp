@@ -2,7 +2,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <ostream>
 #include <string>
+#include <vector>
 
 #include "core/random.hpp"
 #include "scene.hpp"
@@ -13,6 +15,11 @@ struct Shape {
   int dimension;
   std::int64_t nx, ny;
 };
+
+// Readable parameters in test listings and failure messages (gtest would print raw bytes).
+void PrintTo(const Shape &s, std::ostream *os) {
+  *os << s.dimension << "D " << s.nx << "x" << s.ny;
+}
 
 class FftRoundTrip : public ::testing::TestWithParam<Shape> {};
 
@@ -55,19 +62,25 @@ TEST(Fft, ParsevalWeightsCountEveryModeOnce) {
     asp::Spectrum s = grid->make_spectrum();
     grid->fft().forward(f.data(), s.data());
     double spectral = 0.0;
-    for (std::int64_t ky = 0; ky < grid->ny(); ++ky)
-      for (std::int64_t kx = 0; kx < grid->spectral_nx(); ++kx)
-        spectral += grid->hermitian_weight(kx) * std::norm(s[kx + grid->spectral_nx() * ky]);
+    grid->half_spectrum().for_each([&](std::int64_t k, double, double weight) {
+      spectral += weight * std::norm(s[static_cast<std::size_t>(k)]);
+    });
     EXPECT_NEAR(spectral / grid->n_pixels(), direct, 1e-10 * direct);
   }
 }
 
 TEST(Fft, WavevectorsWrapToTheNearestAlias) {
+  // 8 x 7 on 2 x 3: the r2c rows hold kx = 0..4; rows ky = 4..6 stand for ky - 7 = -3..-1.
   auto grid = asp_test::grid_2d(8, 7, 2.0, 3.0);
-  EXPECT_DOUBLE_EQ(grid->qx(4), 2 * asp_test::pi * 4 / 2.0);
-  EXPECT_DOUBLE_EQ(grid->qy(3), 2 * asp_test::pi * 3 / 3.0);
-  EXPECT_DOUBLE_EQ(grid->qy(4), -2 * asp_test::pi * 3 / 3.0);
-  EXPECT_DOUBLE_EQ(grid->qy(6), -2 * asp_test::pi * 1 / 3.0);
+  std::vector<double> q(static_cast<std::size_t>(grid->n_spectral()));
+  grid->half_spectrum().for_each(
+      [&](std::int64_t k, double magnitude, double) { q[static_cast<std::size_t>(k)] = magnitude; });
+  const std::int64_t row = 8 / 2 + 1;
+  EXPECT_DOUBLE_EQ(q[4], 2 * asp_test::pi * 4 / 2.0);
+  EXPECT_DOUBLE_EQ(q[3 * row], 2 * asp_test::pi * 3 / 3.0);
+  EXPECT_DOUBLE_EQ(q[4 * row], 2 * asp_test::pi * 3 / 3.0);
+  EXPECT_DOUBLE_EQ(q[6 * row], 2 * asp_test::pi * 1 / 3.0);
+  EXPECT_DOUBLE_EQ(q[1 + 6 * row], 2 * asp_test::pi * std::hypot(1 / 2.0, 1 / 3.0));
 }
 
 }  // namespace

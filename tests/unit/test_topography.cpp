@@ -1,7 +1,11 @@
 // Topographies and their statistics.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <memory>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -12,6 +16,26 @@
 
 namespace {
 using asp_test::pi;
+
+// Runs call and expects a refusal: Error(invalid_argument) whose message names the argument.
+template <class Call>
+void expect_refused(Call &&call, const std::string &argument) {
+  try {
+    call();
+    ADD_FAILURE() << "accepted; expected a refusal naming '" << argument << "'";
+  } catch (const asp::Error &e) {
+    EXPECT_EQ(e.status(), asp::Status::invalid_argument) << e.what();
+    EXPECT_NE(std::string(e.what()).find("'" + argument + "'"), std::string::npos) << e.what();
+  } catch (const std::exception &e) {
+    ADD_FAILURE() << "threw something other than asp::Error: " << e.what();
+  }
+}
+
+bool all_finite(const std::vector<double> &values) {
+  for (double v : values)
+    if (!std::isfinite(v)) return false;
+  return true;
+}
 
 TEST(Statistics, SinusoidHasTheAnalyticRmsValues) {
   // h = h0 cos(q x): rms h0/sqrt2, slope h0 q/sqrt2, curvature h0 q^2/sqrt2 (1D) and, for
@@ -39,6 +63,12 @@ struct RoughCase {
   std::int64_t nx, ny;
   asp::RoughnessNorm norm;
 };
+
+// Readable parameters in test listings and failure messages (gtest would print raw bytes).
+void PrintTo(const RoughCase &c, std::ostream *os) {
+  *os << c.nx << "x" << c.ny << ", "
+      << (c.norm == asp::RoughnessNorm::rms_height ? "rms height" : "rms slope");
+}
 
 class SelfAffine : public ::testing::TestWithParam<RoughCase> {};
 
@@ -107,6 +137,74 @@ INSTANTIATE_TEST_SUITE_P(Sizes, SelfAffine,
                                   std::to_string(info.param.ny);
                          });
 
+// The exponent of C(q) ~ q^exponent, fitted by least squares to log C against log q over the
+// bins of the radial power spectrum whose mean |q| lies in [q_low, q_high].
+double fitted_exponent(const asp::Grid &grid, const std::vector<double> &h, std::int64_t bins,
+                       double q_low, double q_high) {
+  std::vector<double> q(static_cast<std::size_t>(bins)), c(q.size());
+  asp::radial_power_spectrum(grid, h.data(), bins, q.data(), c.data());
+  double sx = 0, sy = 0, sxx = 0, sxy = 0, m = 0;
+  for (std::size_t b = 0; b < q.size(); ++b) {
+    if (c[b] <= 0 || q[b] < q_low || q[b] > q_high) continue;
+    const double x = std::log(q[b]), y = std::log(c[b]);
+    sx += x, sy += y, sxx += x * x, sxy += x * y, m += 1;
+  }
+  EXPECT_GE(m, 10);
+  return (m * sxy - sx * sy) / (m * sxx - sx * sx);
+}
+
+struct SpectrumCase {
+  int dimension;
+  double hurst;
+};
+
+void PrintTo(const SpectrumCase &c, std::ostream *os) {
+  *os << c.dimension << "D, Hurst " << c.hurst;
+}
+
+class SelfAffineSpectrum : public ::testing::TestWithParam<SpectrumCase> {};
+
+TEST_P(SelfAffineSpectrum, ExponentIsTheFieldsConvention) {
+  // C(q) ~ q^(-2-2H) for a surface, C1D(q) ~ q^(-1-2H) for a profile (Jacobs, Junge and
+  // Pastewka 2017), so that a Hurst exponent means the same roughness for both. The exponent
+  // is fitted between 4 bin widths and 0.7 of the short cutoff and averaged over 4 seeds.
+  // Tolerance 0.1: each bin's C is a mean of 16 (1D) to hundreds (2D) exponentially
+  // distributed powers, so one surface's fit scatters; measured over 200 seeds, by 0.04 (1D)
+  // and 0.06 (2D) with a bias below 0.02 (the curvature of C across a bin), and the mean of 4
+  // stayed within 0.072 of the exponent in the worst of 50 groups. The other convention is
+  // off by 1.
+  const SpectrumCase c = GetParam();
+  const std::int64_t nx = c.dimension == 2 ? 256 : 8192, bins = c.dimension == 2 ? 64 : 256;
+  auto grid = c.dimension == 2 ? asp_test::grid_2d(nx, nx, 1.0, 1.0) : asp_test::grid_1d(nx, 1.0);
+  asp::SelfAffineParameters p;
+  p.hurst = c.hurst;
+  p.long_cutoff = 1.0;
+  p.rolloff = 1.0;
+  p.short_cutoff = 4.0 / nx;
+  p.norm = asp::RoughnessNorm::rms_height;
+  p.target = 1.0;
+  const double q_max = 2 * pi * (nx / 2) * (c.dimension == 2 ? std::sqrt(2.0) : 1.0);
+  const double q_low = 4 * q_max / bins, q_high = 0.7 * 2 * pi / p.short_cutoff;
+  double sum = 0.0;
+  const int seeds = 4;
+  for (int seed = 1; seed <= seeds; ++seed) {
+    p.seed = static_cast<std::uint64_t>(seed);
+    std::vector<double> h(static_cast<std::size_t>(grid->n_pixels()));
+    asp::self_affine_topography(*grid, p, h.data());
+    sum += fitted_exponent(*grid, h, bins, q_low, q_high);
+  }
+  const double expected = c.dimension == 2 ? -2 - 2 * c.hurst : -1 - 2 * c.hurst;
+  EXPECT_NEAR(sum / seeds, expected, 0.1);
+}
+
+INSTANTIATE_TEST_SUITE_P(Conventions, SelfAffineSpectrum,
+                         ::testing::Values(SpectrumCase{1, 0.3}, SpectrumCase{1, 0.8},
+                                           SpectrumCase{2, 0.3}, SpectrumCase{2, 0.8}),
+                         [](const ::testing::TestParamInfo<SpectrumCase> &info) {
+                           return std::to_string(info.param.dimension) + "D_hurst_0_" +
+                                  std::to_string(static_cast<int>(10 * info.param.hurst));
+                         });
+
 TEST(SelfAffineSurface, SameSeedSameSurfaceOtherSeedOtherSurface) {
   auto grid = asp_test::grid_2d(37, 41, 1.0, 1.0);
   asp::SelfAffineParameters p;
@@ -157,6 +255,189 @@ TEST(PowerSpectrum, IntegratesToTheMeanSquareHeight) {
     const double cell = grid->dimension() == 2 ? 4 * pi * pi / grid->area() : 2 * pi / grid->lx();
     EXPECT_NEAR(c * modes * cell, 0.04, 1e-12);
   }
+}
+
+TEST(PowerSpectrum, BinCountLiesBetweenOneAndThePixelCount) {
+  // More bins than pixels would only add empty bins; the count also sizes internal arrays,
+  // so a huge one must be refused, not attempted. A refusal leaves q and c as they were.
+  auto grid = asp_test::grid_2d(16, 12, 1.0, 1.0);
+  std::vector<double> h(16 * 12);
+  asp::sinusoid_topography(*grid, 0.1, 2, 1, h.data());
+  std::vector<double> q(200, -7.0), c(200, -7.0);
+  for (std::int64_t bins : {std::int64_t{0}, std::int64_t{-3}, std::int64_t{16 * 12 + 1},
+                            std::numeric_limits<std::int64_t>::max()}) {
+    expect_refused([&] { asp::radial_power_spectrum(*grid, h.data(), bins, q.data(), c.data()); },
+                   "n_bins");
+    EXPECT_EQ(q, std::vector<double>(200, -7.0));
+    EXPECT_EQ(c, std::vector<double>(200, -7.0));
+  }
+  EXPECT_NO_THROW(asp::radial_power_spectrum(*grid, h.data(), 16 * 12, q.data(), c.data()));
+}
+
+TEST(PowerSpectrum, EveryModeLandsInItsBinOnExtremeBoxes) {
+  // The bin of a mode comes from |q|/q_max, which lies in (0, 1] on any grid, so the index is
+  // in range however small or large the wavevectors are; each bin's mean |q| then lies inside
+  // the bin (to round-off) and every output is finite. (Boxes longer than about 1e150 are left
+  // out: there the spectral layout's |q|^2 underflows and every |q| reads 0.)
+  std::shared_ptr<asp::Grid> grids[] = {
+      asp_test::grid_1d(64, 1e140), asp_test::grid_1d(64, 1e-140),
+      asp_test::grid_2d(16, 8, 1e150, 1e-140), asp_test::grid_2d(9, 7, 3.0, 1e-100)};
+  for (const auto &grid : grids) {
+    std::vector<double> h(static_cast<std::size_t>(grid->n_pixels()));
+    for (std::size_t i = 0; i < h.size(); ++i) h[i] = std::sin(0.7 * i) + 0.1 * (i % 5);
+    const std::int64_t bins = grid->n_pixels();
+    std::vector<double> q(static_cast<std::size_t>(bins)), c(q.size());
+    asp::radial_power_spectrum(*grid, h.data(), bins, q.data(), c.data());
+    EXPECT_TRUE(all_finite(q) && all_finite(c));
+    const double q_max = 2 * pi * std::hypot((grid->nx() / 2) / grid->lx(),
+                                             (grid->ny() / 2) / grid->ly());
+    const double width = q_max / bins;
+    for (std::int64_t b = 0; b < bins; ++b) {
+      EXPECT_GE(q[b], b * width * (1 - 1e-12)) << b;
+      EXPECT_LE(q[b], (b + 1) * width * (1 + 1e-12)) << b;
+    }
+  }
+}
+
+// Every output is finite, or the call is refused naming the argument and leaves the caller's
+// array as it was.
+
+TEST(FiniteOutputs, SphereOfHugeRadiusIsFinite) {
+  // sqrt(R^2 - r^2) - R overflows in R^2 for R = 1e200; -r^2/(R + sqrt(R^2 - r^2)) does not.
+  auto grid = asp_test::grid_2d(64, 64, 1.0, 1.0);
+  std::vector<double> h(64 * 64);
+  asp::sphere_topography(*grid, 1e200, h.data());
+  EXPECT_TRUE(all_finite(h));
+  EXPECT_EQ(h[32 + 64 * 32], 0.0);                   // the apex, at the centre
+  EXPECT_NEAR(h[0], -0.5 / 2e200, 1e-15 * 0.5 / 2e200);  // corner: r^2 = 1/2, h = -r^2/(2R)
+}
+
+TEST(FiniteOutputs, ParaboloidDeeperThanDoublesIsRefused) {
+  // Depth r^2/(2R) at the corner: 0.5/1.2e-321 overflows; on a 1e200 box r^2 itself does.
+  auto grid = asp_test::grid_2d(64, 64, 1.0, 1.0);
+  auto long_line = asp_test::grid_1d(8, 1e200);
+  std::vector<double> h(64 * 64, 7.0);
+  expect_refused([&] { asp::paraboloid_topography(*grid, 6e-322, h.data()); }, "radius");
+  expect_refused([&] { asp::paraboloid_topography(*long_line, 1.0, h.data()); }, "radius");
+  EXPECT_EQ(h, std::vector<double>(64 * 64, 7.0));
+  asp::paraboloid_topography(*grid, 1e-300, h.data());  // deep, but representable
+  EXPECT_TRUE(all_finite(h));
+}
+
+TEST(FiniteOutputs, DoubleSinewaveWhoseAmplitudesOverflowIsRefused) {
+  // At x = 0 both cosines are 1: the heights reach |amplitude| + |ripple_amplitude|.
+  auto grid = asp_test::grid_1d(256, 1.0);
+  std::vector<double> h(256, 7.0);
+  const double huge = std::numeric_limits<double>::max();
+  expect_refused([&] { asp::double_sinewave_topography(*grid, huge, huge, 32, h.data()); },
+                 "amplitude");
+  expect_refused([&] { asp::double_sinewave_topography(*grid, -huge, 1e300, 32, h.data()); },
+                 "ripple_amplitude");
+  EXPECT_EQ(h, std::vector<double>(256, 7.0));
+  asp::double_sinewave_topography(*grid, huge, 0.05, 32, h.data());  // huge + 0.05 = huge
+  EXPECT_TRUE(all_finite(h));
+}
+
+TEST(FiniteOutputs, SinusoidOnExtremeBoxesIsFinite) {
+  // Boxes so short that 2 pi/lx overflows cannot be made (Grid::create refuses them); boxes
+  // so long that lx*i overflows can, and the phase must not go through lx*i.
+  EXPECT_THROW(asp::Grid::create(1, 8, 1, 1e-300, 1.0), asp::Error);
+  EXPECT_THROW(asp::Grid::create(2, 8, 8, 4.9e-324, 1.0), asp::Error);
+  auto long_line = asp_test::grid_1d(8, 1e308);
+  std::vector<double> h(8);
+  asp::sinusoid_topography(*long_line, 1.0, 1, 0, h.data());
+  EXPECT_TRUE(all_finite(h));
+  EXPECT_NEAR(h[4], -1.0, 1e-15);
+  auto short_line = asp_test::grid_1d(2, 1.3e-149);  // about the shortest box of 2 pixels
+  asp::sinusoid_topography(*short_line, 1.0, std::numeric_limits<std::int64_t>::max(), 0,
+                           h.data());
+  EXPECT_TRUE(std::isfinite(h[0]) && std::isfinite(h[1]));
+  auto flat_box = asp_test::grid_2d(8, 4, 1e308, 1e-10);
+  std::vector<double> h2(32);
+  asp::sinusoid_topography(*flat_box, 2.0, 3, 1, h2.data());
+  EXPECT_TRUE(all_finite(h2));
+  EXPECT_NEAR(h2[0], 2.0, 1e-15);
+}
+
+TEST(FiniteOutputs, SelfAffineTargetThatOverflowsIsRefused) {
+  auto grid = asp_test::grid_2d(64, 64, 1.0, 1.0);
+  asp::SelfAffineParameters p;
+  p.long_cutoff = 1.0;
+  p.rolloff = 0.5;
+  p.short_cutoff = 0.1;
+  p.target = 1e308;
+  std::vector<double> h(64 * 64, 7.0);
+  // An rms height of 1e308 puts Gaussian peaks beyond the largest double.
+  p.norm = asp::RoughnessNorm::rms_height;
+  expect_refused([&] { asp::self_affine_topography(*grid, p, h.data()); }, "target");
+  EXPECT_EQ(h, std::vector<double>(64 * 64, 7.0));
+  // An rms slope of 1e308 on a unit box needs heights of about 1e307: representable, and
+  // the statistics of that surface are too.
+  p.norm = asp::RoughnessNorm::rms_slope;
+  asp::self_affine_topography(*grid, p, h.data());
+  EXPECT_TRUE(all_finite(h));
+  const asp::SurfaceStatistics s = asp::surface_statistics(*grid, h.data());
+  EXPECT_NEAR(s.rms_slope / 1e308, 1.0, 1e-12);
+  EXPECT_TRUE(std::isfinite(s.rms_height));
+}
+
+TEST(FiniteOutputs, StatisticsOfTallOrFineSurfacesAreFinite) {
+  // Squares of heights of 1e200, and q^4 = 5e598 on the finest box of 2 pixels, overflow;
+  // the statistics themselves do not.
+  auto grid = asp_test::grid_2d(64, 64, 1.0, 1.0);
+  std::vector<double> h(64 * 64);
+  double sum = 0.0, sum2 = 0.0;
+  for (std::size_t i = 0; i < h.size(); ++i) {
+    const double v = static_cast<double>(i % 3);
+    h[i] = v * 1e200;
+    sum += v, sum2 += v * v;
+  }
+  const double mean = sum / h.size(), rms = std::sqrt(sum2 / h.size() - mean * mean);
+  const asp::SurfaceStatistics tall = asp::surface_statistics(*grid, h.data());
+  EXPECT_NEAR(tall.rms_height / 1e200, rms, 1e-12);
+  EXPECT_TRUE(std::isfinite(tall.rms_slope) && std::isfinite(tall.rms_curvature));
+
+  // h = +1, -1: one mode at the Nyquist q = pi nx/lx, rms 1, slope q, curvature q^2 (1D).
+  const double lx = 1.3e-149, q = pi * 2 / lx;
+  auto fine = asp_test::grid_1d(2, lx);
+  const double pair[2] = {1.0, -1.0};
+  const asp::SurfaceStatistics s = asp::surface_statistics(*fine, pair);
+  EXPECT_NEAR(s.rms_height, 1.0, 1e-15);
+  EXPECT_NEAR(s.rms_slope / q, 1.0, 1e-15);
+  EXPECT_NEAR(s.rms_curvature / (q * q), 1.0, 1e-15);
+}
+
+TEST(FiniteOutputs, StatisticsThatOverflowAreRefusedWhenAskedFor) {
+  // On the finest 2-pixel box, heights of +-1e10 have an rms curvature of 2.3e309.
+  auto fine = asp_test::grid_1d(2, 1.3e-149);
+  const double pair[2] = {1e10, -1e10};
+  double height = -7.0, slope = -7.0, curvature = -7.0;
+  expect_refused([&] { asp::surface_statistics(*fine, pair, &height, &slope, &curvature); },
+                 "heights");
+  EXPECT_EQ(height, -7.0);
+  EXPECT_EQ(slope, -7.0);
+  EXPECT_EQ(curvature, -7.0);
+  asp::surface_statistics(*fine, pair, &height, &slope, nullptr);  // not asked: no refusal
+  EXPECT_EQ(height, 1e10);
+  EXPECT_TRUE(std::isfinite(slope));
+}
+
+TEST(FiniteOutputs, PowerSpectrumIsFiniteOrRefused) {
+  // C = A/(2 pi)^2 |h^|^2: heights of 1e157 on a box of 1e-3 give C ~ 1e306, though
+  // |FFT h|^2 ~ 1e321 overflows on the way; heights of 1e200 on a unit box give C ~ 1e398.
+  std::vector<double> h(64 * 64), q(8, -7.0), c(8, -7.0);
+  for (std::size_t i = 0; i < h.size(); ++i) h[i] = std::sin(0.3 * i) * 1e157;
+  auto small = asp_test::grid_2d(64, 64, 1e-3, 1e-3);
+  asp::radial_power_spectrum(*small, h.data(), 8, q.data(), c.data());
+  EXPECT_TRUE(all_finite(q) && all_finite(c));
+  for (double &v : h) v *= 1e43;
+  std::fill(q.begin(), q.end(), -7.0);
+  std::fill(c.begin(), c.end(), -7.0);
+  auto unit = asp_test::grid_2d(64, 64, 1.0, 1.0);
+  expect_refused([&] { asp::radial_power_spectrum(*unit, h.data(), 8, q.data(), c.data()); },
+                 "heights");
+  EXPECT_EQ(q, std::vector<double>(8, -7.0));
+  EXPECT_EQ(c, std::vector<double>(8, -7.0));
 }
 
 TEST(Topography, SphereAndParaboloidAgreeNearTheApex) {
