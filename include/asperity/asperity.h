@@ -351,7 +351,8 @@ ASP_EXPORT int asp_solver_get_option(const asp_solver *solver, const char *name,
 ASP_EXPORT int asp_solver_get_option_string(const asp_solver *solver, const char *name,
                                             char *buffer, int64_t size, int64_t *length);
 
-/* Shorthands for asp_solver_set_option(solver, "tolerance", ...) and "max_iterations". */
+/* Shorthands for asp_solver_set_option(solver, "tolerance", ...) and "max_iterations"; the
+ * latter takes any count >= 1, and counts above 9.2e18 set 9.2e18. */
 ASP_EXPORT int asp_solver_set_tolerance(asp_solver *solver, double tolerance);
 ASP_EXPORT int asp_solver_set_max_iterations(asp_solver *solver, int64_t max_iterations);
 

@@ -117,7 +117,11 @@ int asp_solver_set_max_iterations(asp_solver *solver, int64_t max_iterations) {
     asp::require_not_null(solver, "solver");
     asp::require_at_least(max_iterations, 1, "max_iterations");
     // Counts beyond 2^53 are not distinguishable as doubles; the option's range caps them.
-    solver->solver->set_option("max_iterations", static_cast<double>(max_iterations));
+    // Counts beyond the option's range (9.2e18) are no limit in practice: they mean the largest.
+    const int64_t largest = 9200000000000000000;
+    solver->solver->set_option("max_iterations",
+                               static_cast<double>(max_iterations > largest ? largest
+                                                                            : max_iterations));
   });
 }
 
@@ -197,6 +201,7 @@ int asp_solver_get_history(const asp_solver *solver, int column, double *values,
       throw asp::Error(asp::Status::size_mismatch,
                        "array 'values' has count " + std::to_string(n) +
                            " but the history has " + std::to_string(rows) + " rows");
+    if (rows > 0) asp::require_not_null(values, "values");
     static_assert(ASP_HISTORY_CONTACT_FRACTION - ASP_HISTORY_ITERATION ==
                       static_cast<int>(asp::HistoryColumn::contact_fraction),
                   "history columns are numbered in the order of a row");

@@ -109,8 +109,9 @@ double System::elastic_energy() const {
   Spectrum s = substrate_->make_spectrum();
   substrate_->forward(p, s.data());
   const Field &compliance = substrate_->normalised_compliance();
-  loops::for_each(static_cast<std::int64_t>(s.size()),
-                  [&](std::int64_t k) { s[k] *= compliance[k]; });
+  substrate_->layout().for_each([&](std::int64_t k, double q, double) {
+    s[k] = q > 0.0 ? s[k] * compliance[k] : Complex(0.0);
+  });
   Field u = grid_->make_field();
   substrate_->backward(s.data(), u.data());
   return substrate_->elastic_energy(u.data());
