@@ -125,12 +125,16 @@ ASP_EXPORT int asp_abi_version(void);
  * ========================================================================================== */
 typedef struct asp_grid asp_grid;
 
-/* A 1D periodic grid of nx >= 1 pixels on a length lx > 0. Fields are per unit length. */
+/* A 1D periodic grid of nx >= 1 pixels on a length lx > 0. Fields are per unit length.
+ * nx is at most 1073741823 (FFTW takes int sizes, and padded transforms double them), and
+ * the box must be representable as below. */
 ASP_EXPORT int asp_grid_create_1d(int64_t nx, double lx, asp_grid **out);
 
 /* A 2D periodic grid of nx x ny pixels (each >= 1, any size: odd and prime sizes work) on a box
- * lx x ly. A 1 x N strip is a valid 2D grid. The box must be representable: the area lx*ly,
- * the pixel sizes and the largest wavevector 2 pi nx/lx must be finite, normal doubles. */
+ * lx x ly. A 1 x N strip is a valid 2D grid. The box must be representable: the area lx*ly
+ * and the pixel sizes must be finite, normal doubles, and every wavevector, from 2 pi/lx to
+ * 2 pi nx/lx (likewise in y), must lie within 1e-150 to 1e150 so that its square is one too.
+ * Otherwise ASP_ERR_INVALID_ARGUMENT names the length; rescale the units. */
 ASP_EXPORT int asp_grid_create_2d(int64_t nx, int64_t ny, double lx, double ly, asp_grid **out);
 
 /* Gives up the caller's reference. The grid lives on while systems made on it exist.

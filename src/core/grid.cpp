@@ -21,16 +21,19 @@ void check_axis(std::int64_t n, double length, const char *size_name, const char
                                               std::to_string(n) + ", more than FFTW can transform (" +
                                               std::to_string(largest_axis) + ")");
   require_positive(length, length_name);
-  // Pixel size and the largest wavevector 2 pi (n/2)/length must be normal doubles; squares
-  // of wavevectors (slopes, curvatures) must stay finite too, hence the margin.
+  // Pixel size and the wavevectors from 2 pi/length to 2 pi (n/2)/length must be normal
+  // doubles, and so must their squares (|q| = sqrt(qx^2 + qy^2), slopes, curvatures), hence
+  // the margins of 1e150 either way.
   const double pixel = length / static_cast<double>(n);
+  const double q_min = two_pi / length;
   const double q_max = two_pi * static_cast<double>(n) / length;
-  if (!(pixel >= DBL_MIN) || !(q_max < 1e150))
+  if (!(pixel >= DBL_MIN) || !(q_max < 1e150) || !(q_min > 1e-150))
     throw Error(Status::invalid_argument,
                 std::string("argument '") + length_name + "' is " + format_number(length) +
                     ": with " + std::to_string(n) + " pixels the pixel size " +
-                    format_number(pixel) + " or the largest wavevector " +
-                    format_number(q_max) + " is not representable; rescale the lengths");
+                    format_number(pixel) + " or the wavevectors from " + format_number(q_min) +
+                    " to " + format_number(q_max) +
+                    " (and their squares) are not representable; rescale the lengths");
 }
 }  // namespace
 

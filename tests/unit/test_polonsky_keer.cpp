@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -166,6 +167,12 @@ struct Extreme {
   std::int64_t nx, ny;
   double modulus, slope, pressure_over_modulus_slope;
 };
+
+// ctest shows the parameter of each case; without this it would print the struct's bytes.
+void PrintTo(const Extreme &e, std::ostream *os) {
+  *os << e.name << ", " << e.nx << " x " << e.ny << ", E* " << e.modulus << ", slope "
+      << e.slope << ", pressure " << e.pressure_over_modulus_slope << " E* slope";
+}
 
 class ExtremeScenes : public ::testing::TestWithParam<Extreme> {};
 

@@ -313,12 +313,13 @@ TEST(FiniteOutputs, SphereOfHugeRadiusIsFinite) {
 }
 
 TEST(FiniteOutputs, ParaboloidDeeperThanDoublesIsRefused) {
-  // Depth r^2/(2R) at the corner: 0.5/1.2e-321 overflows; on a 1e200 box r^2 itself does.
+  // Depth r^2/(2R) at the corner: 0.5/1.2e-321 overflows, and so does (3e150)^2/(2e-20) on
+  // the longest box a grid allows.
   auto grid = asp_test::grid_2d(64, 64, 1.0, 1.0);
-  auto long_line = asp_test::grid_1d(8, 1e200);
+  auto long_line = asp_test::grid_1d(8, 6e150);
   std::vector<double> h(64 * 64, 7.0);
   expect_refused([&] { asp::paraboloid_topography(*grid, 6e-322, h.data()); }, "radius");
-  expect_refused([&] { asp::paraboloid_topography(*long_line, 1.0, h.data()); }, "radius");
+  expect_refused([&] { asp::paraboloid_topography(*long_line, 1e-20, h.data()); }, "radius");
   EXPECT_EQ(h, std::vector<double>(64 * 64, 7.0));
   asp::paraboloid_topography(*grid, 1e-300, h.data());  // deep, but representable
   EXPECT_TRUE(all_finite(h));
@@ -339,11 +340,12 @@ TEST(FiniteOutputs, DoubleSinewaveWhoseAmplitudesOverflowIsRefused) {
 }
 
 TEST(FiniteOutputs, SinusoidOnExtremeBoxesIsFinite) {
-  // Boxes so short that 2 pi/lx overflows cannot be made (Grid::create refuses them); boxes
-  // so long that lx*i overflows can, and the phase must not go through lx*i.
+  // Boxes so short that 2 pi/lx overflows, or so long that (2 pi/lx)^2 underflows, cannot be
+  // made (Grid::create refuses them); on the extremes that can, the phase stays finite.
   EXPECT_THROW(asp::Grid::create(1, 8, 1, 1e-300, 1.0), asp::Error);
   EXPECT_THROW(asp::Grid::create(2, 8, 8, 4.9e-324, 1.0), asp::Error);
-  auto long_line = asp_test::grid_1d(8, 1e308);
+  EXPECT_THROW(asp::Grid::create(1, 8, 1, 1e308, 1.0), asp::Error);
+  auto long_line = asp_test::grid_1d(8, 6e150);
   std::vector<double> h(8);
   asp::sinusoid_topography(*long_line, 1.0, 1, 0, h.data());
   EXPECT_TRUE(all_finite(h));
@@ -352,7 +354,7 @@ TEST(FiniteOutputs, SinusoidOnExtremeBoxesIsFinite) {
   asp::sinusoid_topography(*short_line, 1.0, std::numeric_limits<std::int64_t>::max(), 0,
                            h.data());
   EXPECT_TRUE(std::isfinite(h[0]) && std::isfinite(h[1]));
-  auto flat_box = asp_test::grid_2d(8, 4, 1e308, 1e-10);
+  auto flat_box = asp_test::grid_2d(8, 4, 6e150, 1e-10);
   std::vector<double> h2(32);
   asp::sinusoid_topography(*flat_box, 2.0, 3, 1, h2.data());
   EXPECT_TRUE(all_finite(h2));
