@@ -272,7 +272,9 @@ ASP_EXPORT int asp_system_set_topography(asp_system *system, const double *heigh
 /* The stiffness K~(0) > 0 of the mean (q = 0) displacement mode. Default: the mean of K~ at the
  * lowest non-zero wavevector along x and along y (E* pi/lx in 1D), as in the thesis. Changing
  * it changes mean displacement and penetration, not the pressure under mean-pressure control,
- * and not ASP_ELASTIC_ENERGY (see ASP_MEAN_MODE_ENERGY). */
+ * and not ASP_ELASTIC_ENERGY (see ASP_MEAN_MODE_ENERGY). The current state keeps its pressure
+ * and gap; its penetration moves by pbar (1/K~(0)new - 1/K~(0)old), so that it stays an
+ * equilibrium (refused if that penetration is not a finite double). */
 ASP_EXPORT int asp_system_set_k0(asp_system *system, double k0);
 
 /* The reference pressure that solver errors are divided by (see asp_solver_solve). Default 0:

@@ -43,7 +43,10 @@ DualFormulation::DualFormulation(System &system, Control control, double value)
 
   // The scene in these units, and what its results will need in physical units.
   const double range = system.height_range() / length_unit_;
-  const double extent = 1.0 + std::fabs(target_) + range;
+  // Under load control the mean displacement pbar/K~(0) joins the penetration; a soft mean
+  // mode (small K~(0)) makes it much larger than the pressure scale.
+  const double mean_displacement = load ? std::fabs(target_) * (k / substrate_.k0()) : 0.0;
+  const double extent = 1.0 + std::fabs(target_) + range + mean_displacement;
   if (!normal(pressure_unit_) || !normal(length_unit_))
     throw Error(Status::invalid_argument,
                 "the scene's pressure scale " + format_number(pressure_unit_) +
@@ -56,14 +59,16 @@ DualFormulation::DualFormulation(System &system, Control control, double value)
                     (load ? "pressure" : "length") + " scale " +
                     format_number(load ? pressure_unit_ : length_unit_) +
                     "; such a solve cannot be represented in doubles");
-  if (!(range <= largest_scaled) || !representable(pressure_unit_ * n * extent) ||
+  if (!(range <= largest_scaled) || !(mean_displacement <= largest_scaled) ||
+      !representable(pressure_unit_ * n * extent) ||
       !representable(length_unit_ * n * extent) ||
       !representable(energy_unit_ * n * extent * extent))
     throw Error(Status::invalid_argument,
                 "argument 'value' is " + format_number(value) +
                     ": with heights spanning " + format_number(system.height_range()) +
-                    " the pressures, gaps or energies of this solve would overflow a double; "
-                    "rescale the units");
+                    " and K~(0) = " + format_number(substrate_.k0()) +
+                    " the pressures, gaps, displacements or energies of this solve would "
+                    "overflow a double; rescale the units");
 
   // Work arrays before anything changes, so that running out of memory changes nothing.
   direction_ = grid_.make_field();

@@ -189,6 +189,23 @@ static void test_scenes_doubles_cannot_hold(void) {
   EXPECT_REFUSED(asp_solver_solve(solver, system, ASP_CONTROL_PENETRATION, -DBL_MAX));
   EXPECT(asp_system_get(system, ASP_MEAN_GAP, &v) == ASP_OK && isfinite(v));
 
+  /* A mean mode so soft that the mean displacement pbar/K~(0) of a load leaves the doubles:
+   * refused, or solved with every output finite. */
+  {
+    static const double soft[] = {1e-300, 1e-200, 1e-150, 1e-100};
+    double k0 = 0;
+    int i;
+    EXPECT(asp_system_get(system, ASP_K0, &k0) == ASP_OK);
+    for (i = 0; i < 4; ++i) {
+      EXPECT(asp_system_reset(system) == ASP_OK);
+      EXPECT(asp_system_set_k0(system, soft[i]) == ASP_OK);
+      status = asp_solver_solve(solver, system, ASP_CONTROL_MEAN_PRESSURE, 0.05);
+      EXPECT(status == ASP_OK || status == ASP_ERR_INVALID_ARGUMENT);
+      if (status == ASP_OK) expect_finite_outcome(system, solver, n, __LINE__);
+    }
+    EXPECT(asp_system_set_k0(system, k0) == ASP_OK);
+  }
+
   /* Heights spanning more than a double. */
   h[0] = DBL_MAX;
   h[1] = -DBL_MAX;
