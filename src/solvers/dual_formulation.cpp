@@ -1,5 +1,7 @@
 #include "solvers/dual_formulation.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cfloat>
 #include <cmath>
 
@@ -207,14 +209,30 @@ DualFormulation::Gap DualFormulation::evaluate_gap(bool with_objective) {
   const double delta_before = delta_;
   gap_of_iterate(g);
 
-  // Sums over the contact set I_c = {p > 0}, and those of the objective if asked for.
-  const auto s = loops::sums<3>(grid_.reductions(), n_, [&](std::int64_t i, double *sum) {
-    const double in = p[i] > 0.0 ? 1.0 : 0.0;
-    const double gi = in * g[i];
-    sum[0] += gi;
-    sum[1] += gi * gi;
-    sum[2] += in;
-  });
+  // Sums over the contact set I_c = {p > 0}, and those of the objective if asked for, in the
+  // same pass (a second pass over p and g would cost more than the objective's own reads).
+  std::array<double, 6> s{};
+  if (with_objective) {
+    s = loops::sums<6>(grid_.reductions(), n_, [&](std::int64_t i, double *sum) {
+      const double in = p[i] > 0.0 ? 1.0 : 0.0;
+      const double gi = in * g[i];
+      sum[0] += gi;
+      sum[1] += gi * gi;
+      sum[2] += in;
+      sum[3] += p[i] * g[i];
+      sum[4] += p[i] * scaled_height(i);
+      sum[5] += p[i];
+    });
+  } else {
+    const auto c = loops::sums<3>(grid_.reductions(), n_, [&](std::int64_t i, double *sum) {
+      const double in = p[i] > 0.0 ? 1.0 : 0.0;
+      const double gi = in * g[i];
+      sum[0] += gi;
+      sum[1] += gi * gi;
+      sum[2] += in;
+    });
+    std::copy(c.begin(), c.end(), s.begin());
+  }
   const double contacts = s[2];
   contacts_ = contacts;
   // Under load control the penetration is whatever closes the mean gap on I_c.
@@ -223,17 +241,10 @@ DualFormulation::Gap DualFormulation::evaluate_gap(bool with_objective) {
   Gap gap;
   gap.norm = std::fmax(s[1] - 2.0 * shift_ * s[0] + contacts * shift_ * shift_, 0.0);
   gap.contacts = contacts;
-  gap.objective = 0.0;
-  if (with_objective) {
-    // Pi = sum p (u/2 - w - delta) with u = g_arrays + w + delta_before (before centring).
-    const auto o = loops::sums<3>(grid_.reductions(), n_, [&](std::int64_t i, double *sum) {
-      sum[0] += p[i] * g[i];
-      sum[1] += p[i] * scaled_height(i);
-      sum[2] += p[i];
-    });
-    gap.objective =
-        scale_ * (0.5 * o[0] - 0.5 * o[1] + (0.5 * delta_before - delta_) * o[2]);
-  }
+  // Pi = sum p (u/2 - w - delta) with u = g_arrays + w + delta_before (before centring).
+  gap.objective =
+      with_objective ? scale_ * (0.5 * s[3] - 0.5 * s[4] + (0.5 * delta_before - delta_) * s[5])
+                     : 0.0;
   return gap;
 }
 
