@@ -1,7 +1,7 @@
 /* Regression tests, through the public header, for defects found when the library was tried
  * as a new user would, fuzzed and run on extreme scenes: warm starts that stalled, solves that
  * said "converged" with NaN or nonsense, non-finite results returned with ASP_OK, and a
- * too-large grid reported as an internal error. Prints "N passed, N failed". */
+ * too-large grid reported as an internal error. */
 #include <float.h>
 #include <limits.h>
 #include <math.h>
@@ -10,20 +10,9 @@
 #include <string.h>
 
 #include "asperity/asperity.h"
+#include "check.h"
 
-static int passed = 0;
-static int failed = 0;
-
-static void expect(int condition, const char *what, int line) {
-  if (condition) {
-    ++passed;
-  } else {
-    ++failed;
-    fprintf(stderr, "FAILED line %d: %s (last error: '%s')\n", line, what,
-            asp_last_error_message());
-  }
-}
-#define EXPECT(c) expect((c), #c, __LINE__)
+#define EXPECT(c) CHECK(c)
 
 /* The smallest gap of the system's state. */
 static double min_gap(const asp_system *system, int64_t n) {
@@ -105,7 +94,7 @@ static void expect_finite_outcome(const asp_system *system, const asp_solver *so
       if (!isfinite(f[i])) finite = 0;
   }
   free(f);
-  expect(finite, "every output finite", line);
+  check_record(finite, __FILE__, line, "every output finite");
 }
 
 /* The unit scene (a sinusoidal egg box on a 32 x 32 unit box, E* = 1, mean pressure 0.05)
@@ -266,6 +255,5 @@ int main(void) {
   test_scale_invariance();
   test_scenes_doubles_cannot_hold();
   test_too_large();
-  printf("%d passed, %d failed\n", passed, failed);
-  return failed == 0 ? 0 : 1;
+  return check_summary("api.defects");
 }
