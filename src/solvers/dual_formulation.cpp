@@ -109,22 +109,26 @@ void DualFormulation::gap_of_iterate(double *gap) {
   // old one and that of t (still in spectrum_ from the curvature) without a transform. Every
   // few such steps it is recomputed, so that rounding cannot accumulate.
   Complex *ps = pressure_spectrum_.data();
+  Complex *s = spectrum_.data();
+  const Complex *hs = height_spectrum_.data();
+  const double *c = compliance_.data();
+  const double factor = scale_ * compliance_factor_;
   const auto m = static_cast<std::int64_t>(spectrum_.size());
   if (linear_update_ready_) {
-    const Complex *ts = spectrum_.data();
+    // One pass: the pressure's new spectrum and the gap's, from the old one and t's.
     const double a = step_scale_, b = step_length_;
-    loops::for_each(m, [&](std::int64_t k) { ps[k] = a * ps[k] - b * ts[k]; });
+    loops::for_each(m, [&](std::int64_t k) {
+      const Complex p_k = a * ps[k] - b * s[k];
+      ps[k] = p_k;
+      s[k] = factor * c[k] * p_k - hs[k];
+    });
     ++linear_updates_;
   } else {
     substrate_.forward(state_.pressure.data(), ps);
     counters_.transforms += 1;
     linear_updates_ = 0;
+    loops::for_each(m, [&](std::int64_t k) { s[k] = factor * c[k] * ps[k] - hs[k]; });
   }
-  Complex *s = spectrum_.data();
-  const Complex *hs = height_spectrum_.data();
-  const double *c = compliance_.data();
-  const double factor = scale_ * compliance_factor_;
-  loops::for_each(m, [&](std::int64_t k) { s[k] = factor * c[k] * ps[k] - hs[k]; });
   s[0] -= delta_;
   substrate_.backward(spectrum_.data(), gap);
   counters_.transforms += 1;
