@@ -40,6 +40,10 @@ DualFormulation::DualFormulation(System &system, Control control, double value)
   length_unit_ = pressure_unit_ / k;
   energy_unit_ = grid_.pixel_area() * pressure_unit_ * length_unit_;
   target_ = load ? value / pressure_unit_ : value / length_unit_;
+  // The objective holds the given penetration from the start, so that value_and_gradient
+  // means the same before and after begin(); under load control it is the multiplier, 0
+  // until begin() loads the stored one.
+  delta_ = load ? 0.0 : target_;
   compliance_factor_ = k;
   const double n = static_cast<double>(n_);
 
@@ -173,7 +177,8 @@ double DualFormulation::error(const double *x, const double *gradient) const {
   }
   return loops::maximum(grid_.reductions(), n_, [&](std::int64_t i) {
     const double g = gradient[i] - shift;
-    return x[i] > 0.0 ? std::fabs(g) : -g;
+    // max(-g, 0) where x = 0 (an open gap is no violation), NaN kept.
+    return x[i] > 0.0 ? std::fabs(g) : (g > 0.0 ? 0.0 : -g);
   });
 }
 
@@ -271,7 +276,7 @@ double DualFormulation::update_direction(double beta) {
         const bool in = p[i] > 0.0;
         const double ti = in ? gi + beta * (t[i] - t_mean) : 0.0;
         t[i] = ti;
-        const double v = in ? std::fabs(gi) : -gi;
+        const double v = in ? std::fabs(gi) : (gi > 0.0 ? 0.0 : -gi);
         max = max > v ? max : v;
         sum[0] += gi * ti;
         sum[1] += v;
