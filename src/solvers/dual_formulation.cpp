@@ -40,10 +40,6 @@ DualFormulation::DualFormulation(System &system, Control control, double value)
   length_unit_ = pressure_unit_ / k;
   energy_unit_ = grid_.pixel_area() * pressure_unit_ * length_unit_;
   target_ = load ? value / pressure_unit_ : value / length_unit_;
-  // The objective holds the given penetration from the start, so that value_and_gradient
-  // means the same before and after begin(); under load control it is the multiplier, 0
-  // until begin() loads the stored one.
-  delta_ = load ? 0.0 : target_;
   compliance_factor_ = k;
   const double n = static_cast<double>(n_);
 
@@ -87,6 +83,7 @@ DualFormulation::DualFormulation(System &system, Control control, double value)
   substrate_.forward(w, height_spectrum_.data());
   loops::for_each(n_, [&](std::int64_t i) { w[i] = 0.0; });
   counters_.transforms += 1;
+  load_state();
 }
 
 // ---- Formulation --------------------------------------------------------------------------
@@ -94,6 +91,8 @@ DualFormulation::DualFormulation(System &system, Control control, double value)
 void DualFormulation::gap_of(const double *pressure, double pressure_scale, double *gap) {
   // gap = backward(scale k C forward(p) - H) - delta: the scaled gap in one transform pair and
   // one pass over the spectrum (H, the spectrum of the scaled heights, carries the 1/N).
+  // It overwrites the direction's spectrum, which the next linear update would read.
+  linear_update_ready_ = false;
   substrate_.forward(pressure, spectrum_.data());
   Complex *s = spectrum_.data();
   const Complex *hs = height_spectrum_.data();
@@ -150,6 +149,7 @@ double DualFormulation::value_and_gradient(const double *x, double *gradient) {
 }
 
 void DualFormulation::hessian_product(const double *direction, double *product) {
+  linear_update_ready_ = false;  // the direction's spectrum is overwritten, as in gap_of
   substrate_.forward(direction, spectrum_.data());
   Complex *s = spectrum_.data();
   const double *c = compliance_.data();
@@ -184,7 +184,7 @@ double DualFormulation::error(const double *x, const double *gradient) const {
 
 // ---- Polonsky & Keer's steps --------------------------------------------------------------
 
-void DualFormulation::begin() {
+void DualFormulation::load_state() {
   double *p = state_.pressure.data();
   const double inverse_unit = 1.0 / pressure_unit_;
   const double n = static_cast<double>(n_);

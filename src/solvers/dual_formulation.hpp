@@ -25,7 +25,10 @@ namespace asp {
 class DualFormulation final : public Formulation {
  public:
   // Checks that the scene and the target can be represented (throws Error naming the
-  // argument) and allocates the work arrays; the system's state is not touched yet.
+  // argument, the state untouched), allocates the work arrays, then loads the system's state
+  // as the starting iterate, in place and in scaled units: the stored pressure (negative
+  // values clipped), rescaled to the target mean under load control (uniform if there is
+  // none), and the stored or given penetration. finish() writes it back in physical units.
   DualFormulation(System &system, Control control, double value);
 
   // ---- Formulation
@@ -40,10 +43,7 @@ class DualFormulation final : public Formulation {
   // Converts scaled objective values to the physical energy (per unit length in 1D).
   double energy_unit() const { return energy_unit_; }
 
-  // ---- Polonsky & Keer's steps
-  // Loads the system's state as the starting iterate: the stored pressure (negative values
-  // clipped), rescaled to the target mean under load control (uniform if there is none).
-  void begin();
+  // ---- Polonsky & Keer's steps (the constructor has loaded the starting iterate)
 
   struct Gap {
     double norm;       // sum over the contact set of (g - mean)^2 (load) or g^2 (penetration)
@@ -76,6 +76,7 @@ class DualFormulation final : public Formulation {
   double scaled_height(std::int64_t i) const { return (heights_[i] - max_height_) / length_unit_; }
   void gap_of(const double *pressure, double pressure_scale, double *gap);
   void gap_of_iterate(double *gap);
+  void load_state();
 
   System &system_;
   const Substrate &substrate_;

@@ -17,7 +17,6 @@ namespace {
 // already uniform on I_c, as after a warm start from a one-pixel contact), those pixels are
 // admitted with the pressure that closes their own gap, and descent starts again.
 void polonsky_keer(DualFormulation &f, Monitor &monitor) {
-  f.begin();
   double gap_norm_old = 1.0;
   bool conjugate = false;
   for (std::int64_t iteration = 0;; ++iteration) {

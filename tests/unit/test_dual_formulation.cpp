@@ -593,17 +593,16 @@ TEST_P(DualFormulationState, GapAfterFinishIsThatOfThePressure) {
     else
       EXPECT_NEAR(s.system->state().penetration, s.value, 1e-15 * s.value);
   }
-  // The formulation driven by hand from a warm, non-equilibrium state: begin, one gap, finish.
+  // The formulation driven by hand from a warm, non-equilibrium state: construct, one gap, finish.
   SceneSetup s = make_setup(c);
   asp::Random random(41);
   for (double &p : s.system->state().pressure)
     p = random.uniform() < 0.4 ? 0.0 : 0.04 * s.modulus * random.uniform();
   s.system->state().penetration = 0.2 * height_range(s.heights);
   asp::DualFormulation dual(*s.system, c.control, s.value);
-  dual.begin();
   dual.evaluate_gap(false);
   ASSERT_TRUE(dual.finish());
-  expect_gap_of_pressure(s, "begin, one gap, finish");
+  expect_gap_of_pressure(s, "construct, one gap, finish");
 }
 
 // Polonsky & Keer's own error (update_direction) follows the same definition: a negative
@@ -617,8 +616,8 @@ TEST_P(DualFormulationScene, NoContactHasErrorZero) {
   EXPECT_EQ(report.error, 0.0);
 }
 
-// Under load control the penetration in the objective is the multiplier: the stored one after
-// begin(), then the one that closes the mean gap on the contact set. The objective reported by
+// Under load control the penetration in the objective is the multiplier: the stored one when
+// constructed, then the one that closes the mean gap on the contact set. The objective reported by
 // evaluate_gap is the value the generic interface gives at the same iterate, and its gap is the
 // gradient there.
 TEST_P(DualFormulationScene, MultiplierUnderLoadControl) {
@@ -641,7 +640,6 @@ TEST_P(DualFormulationScene, MultiplierUnderLoadControl) {
   s.system->state().penetration = stored;
 
   asp::DualFormulation dual(*s.system, c.control, s.value);
-  dual.begin();
   // The starting iterate: the warm pressure rescaled to the target mean, in units of P.
   Vector x(warm.size());
   for (std::size_t i = 0; i < x.size(); ++i) x[i] = warm[i] * (s.value / mean) / unit;
