@@ -306,12 +306,12 @@ bool DualFormulation::step(double tau) {
   // Step, project onto p >= 0, and let pixels with a negative gap enter the contact set.
   // The last sum counts pixels whose new pressure is not the plain step (clipped or
   // entered): when there are none, the pressure's spectrum can be updated linearly.
+  // Off the contact set t = 0 (update_direction made it so) and p = 0, so the plain step
+  // leaves such pixels at 0 without a test of their old pressure.
   const auto s = loops::sums<4>(grid_.reductions(), n_, [&](std::int64_t i, double *sum) {
     const double gi = g[i] - shift;
-    const double old_p = scale * p[i];
-    const double stepped = old_p - tau * t[i];
-    double pi = old_p > 0.0 ? stepped : 0.0;
-    pi = pi > 0.0 ? pi : 0.0;
+    const double stepped = scale * p[i] - tau * t[i];
+    double pi = stepped > 0.0 ? stepped : 0.0;
     const bool enters = (pi == 0.0) & (gi < 0.0);
     pi = enters ? -tau * gi : pi;
     sum[0] += pi;
