@@ -130,11 +130,12 @@ typedef struct asp_grid asp_grid;
  * the box must be representable as below. */
 ASP_EXPORT int asp_grid_create_1d(int64_t nx, double lx, asp_grid **out);
 
-/* A 2D periodic grid of nx x ny pixels (each >= 1, any size: odd and prime sizes work) on a box
- * lx x ly. A 1 x N strip is a valid 2D grid. The box must be representable: the area lx*ly
- * and the pixel sizes must be finite, normal doubles, and every wavevector, from 2 pi/lx to
- * 2 pi nx/lx (likewise in y), must lie within 1e-150 to 1e150 so that its square is one too.
- * Otherwise ASP_ERR_INVALID_ARGUMENT names the length; rescale the units. */
+/* A 2D periodic grid of nx x ny pixels (each from 1 to 1073741823, any size: odd and prime
+ * sizes work) on a box lx x ly. A 1 x N strip is a valid 2D grid. The box must be
+ * representable: the area lx*ly and the pixel sizes must be finite, normal doubles, and every
+ * wavevector, from 2 pi/lx to 2 pi nx/lx (likewise in y), must lie within 1e-150 to 1e150 so
+ * that its square is one too. Otherwise ASP_ERR_INVALID_ARGUMENT names the length; rescale
+ * the units. */
 ASP_EXPORT int asp_grid_create_2d(int64_t nx, int64_t ny, double lx, double ly, asp_grid **out);
 
 /* Gives up the caller's reference. The grid lives on while systems made on it exist.
@@ -343,9 +344,10 @@ ASP_EXPORT int asp_solver_describe(const asp_solver *solver, char *buffer, int64
 /* Options by name. Every algorithm has
  *   "tolerance"       real in (0, 1e300], default 1e-8: stop when the error falls to it;
  *   "max_iterations"  integer in [1, 9.2e18], default 10000;
- *   "stall_window"    integer in [0, 9.2e18], default 1000: stop as stalled when the
- *                     smallest error seen has not fallen below 0.99 times itself within
- *                     this many iterations (0: never stall);
+ *   "stall_window"    integer in [0, 9.2e18], default 1000: stop as stalled when this
+ *                     many iterations have passed since the error last fell below 0.99
+ *                     times the error of the iteration at which it last did so (the
+ *                     starting point at first); 0: never stall;
  * and its own options (asp_solver_describe lists them). Integer options take whole numbers
  * given as doubles. An unknown name or a value outside the range is refused with
  * ASP_ERR_INVALID_ARGUMENT, naming the option and listing the valid names or the range;
@@ -401,7 +403,8 @@ ASP_EXPORT int asp_solver_set_history(asp_solver *solver, int on);
  *   ASP_TERMINATION_STALLED          no progress within stall_window iterations;
  *   ASP_TERMINATION_BREAKDOWN        the arithmetic broke down (a non-finite value appeared);
  *                                    the system is reset to the zero-pressure state (no
- *                                    contact), and the final error is the last finite one.
+ *                                    contact), and the final error is the last finite one
+ *                                    (DBL_MAX if not even the starting point was finite).
  * Errors (a status other than ASP_OK) mean the solve did not run or its result could not be
  * stored; the system keeps the state it had before the call, and the solver has no report. */
 #define ASP_CONTROL_MEAN_PRESSURE 501

@@ -2,14 +2,20 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 #include "core/error.hpp"
 
 namespace asp {
 
 std::string format_number(double value) {
+  // The shortest of 15, 16 or 17 significant digits that reads back as the same double, so
+  // that 1e300 prints as 1e+300 and not as 1.0000000000000001e+300.
   char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.17g", value);
+  for (int digits = 15; digits <= 17; ++digits) {
+    std::snprintf(buffer, sizeof buffer, "%.*g", digits, value);
+    if (std::strtod(buffer, nullptr) == value || !std::isfinite(value)) break;
+  }
   return buffer;
 }
 

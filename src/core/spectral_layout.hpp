@@ -48,6 +48,20 @@ class SpectralLayout {
     return total;
   }
 
+  // For the half_spectrum packing, weighted_sum(value) = 2 * (sum of value over all entries)
+  // - single_entries_sum(value). A loop that computes its entries as it goes, and so cannot
+  // evaluate one twice, sums over all entries itself and subtracts this afterwards.
+  template <class Value>
+  double single_entries_sum(Value &&value) const {
+    double total = 0.0;
+    for (std::int64_t ky = 0; ky < ny_; ++ky) {
+      const std::int64_t row = row_length_ * ky;
+      total += value(row);
+      if (second_single_ > 0) total += value(row + second_single_);
+    }
+    return total;
+  }
+
   // visit(k, q, weight) for every stored entry k, in storage order.
   template <class Visit>
   void for_each(Visit &&visit) const {

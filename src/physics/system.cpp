@@ -87,6 +87,7 @@ void System::displacement(double *out) const {
 }
 
 void System::set_k0(double k0) {
+  require_positive(k0, "k0");
   const double p_mean = mean_pressure();
   const double shift = p_mean / k0 - p_mean / substrate_->k0();
   if (!std::isfinite(state_.penetration + shift))

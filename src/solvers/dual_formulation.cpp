@@ -106,7 +106,7 @@ void DualFormulation::gap_of(const double *pressure, double pressure_scale, doub
   counters_.evaluations += 1;
 }
 
-void DualFormulation::gap_of_iterate(double *gap) {
+double DualFormulation::gap_of_iterate(double *gap, bool with_energy) {
   // The spectrum of the pressure array: after a step that moved no pixel onto or off the
   // contact set, p_new = scale_old p_old - tau t exactly, so its spectrum follows from the
   // old one and that of t (still in spectrum_ from the curvature) without a transform. Every
@@ -117,26 +117,42 @@ void DualFormulation::gap_of_iterate(double *gap) {
   const double *c = compliance_.data();
   const double factor = scale_ * compliance_factor_;
   const auto m = static_cast<std::int64_t>(spectrum_.size());
-  if (linear_update_ready_) {
-    // One pass: the pressure's new spectrum and the gap's, from the old one and t's.
-    const double a = step_scale_, b = step_length_;
-    loops::for_each(m, [&](std::int64_t k) {
-      const Complex p_k = a * ps[k] - b * s[k];
-      ps[k] = p_k;
-      s[k] = factor * c[k] * p_k - hs[k];
-    });
+  const bool linear = linear_update_ready_;
+  if (linear) {
     ++linear_updates_;
   } else {
     substrate_.forward(state_.pressure.data(), ps);
     counters_.transforms += 1;
     linear_updates_ = 0;
-    loops::for_each(m, [&](std::int64_t k) { s[k] = factor * c[k] * ps[k] - hs[k]; });
+  }
+  const double a = step_scale_, b = step_length_;
+  // One pass: the pressure's new spectrum (if updated linearly) and the gap's; with the
+  // energy, also sum_q C|P_q|^2 over the stored entries, from which p.u follows by Parseval.
+  const auto spectral_step = [&](std::int64_t k) {
+    const Complex p_k = linear ? a * ps[k] - b * s[k] : ps[k];
+    ps[k] = p_k;
+    s[k] = factor * c[k] * p_k - hs[k];
+    return c[k] * std::norm(p_k);
+  };
+  double pressure_dot_displacement = 0.0;
+  if (with_energy) {
+    const double all = loops::sums<1>(grid_.reductions(), m, [&](std::int64_t k, double *sum) {
+      sum[0] += spectral_step(k);
+    })[0];
+    const double singles = substrate_.layout().single_entries_sum(
+        [&](std::int64_t k) { return c[k] * std::norm(ps[k]); });
+    double parts[1] = {singles};
+    grid_.reductions().combine_sums(parts, 1);
+    pressure_dot_displacement = factor * (2.0 * all - parts[0]);
+  } else {
+    loops::for_each(m, [&](std::int64_t k) { spectral_step(k); });
   }
   s[0] -= delta_;
   substrate_.backward(spectrum_.data(), gap);
   counters_.transforms += 1;
   counters_.evaluations += 1;
   linear_update_ready_ = false;
+  return pressure_dot_displacement;
 }
 
 double DualFormulation::value_and_gradient(const double *x, double *gradient) {
@@ -216,21 +232,20 @@ DualFormulation::Gap DualFormulation::evaluate_gap(bool with_objective) {
   double *g = state_.gap.data();
   const double *p = state_.pressure.data();
   const double delta_before = delta_;
-  gap_of_iterate(g);
+  const double pressure_dot_displacement = gap_of_iterate(g, with_objective);
 
   // Sums over the contact set I_c = {p > 0}, and those of the objective if asked for, in the
-  // same pass (a second pass over p and g would cost more than the objective's own reads).
-  std::array<double, 6> s{};
+  // same pass.
+  std::array<double, 5> s{};
   if (with_objective) {
-    s = loops::sums<6>(grid_.reductions(), n_, [&](std::int64_t i, double *sum) {
+    s = loops::sums<5>(grid_.reductions(), n_, [&](std::int64_t i, double *sum) {
       const double in = p[i] > 0.0 ? 1.0 : 0.0;
       const double gi = in * g[i];
       sum[0] += gi;
       sum[1] += gi * gi;
       sum[2] += in;
       sum[3] += p[i] * g[i];
-      sum[4] += p[i] * scaled_height(i);
-      sum[5] += p[i];
+      sum[4] += p[i];
     });
   } else {
     const auto c = loops::sums<3>(grid_.reductions(), n_, [&](std::int64_t i, double *sum) {
@@ -250,10 +265,12 @@ DualFormulation::Gap DualFormulation::evaluate_gap(bool with_objective) {
   Gap gap;
   gap.norm = std::fmax(s[1] - 2.0 * shift_ * s[0] + contacts * shift_ * shift_, 0.0);
   gap.contacts = contacts;
-  // Pi = sum p (u/2 - w - delta) with u = g_arrays + w + delta_before (before centring).
-  gap.objective =
-      with_objective ? scale_ * (0.5 * s[3] - 0.5 * s[4] + (0.5 * delta_before - delta_) * s[5])
-                     : 0.0;
+  // Pi = sum p (u/2 - w - delta) = sum p g_before - (1/2) sum p u + (delta_before - delta)
+  // sum p, with g_before = u - w - delta_before the arrays' gap before centring; sum p u
+  // comes from the spectral pass (Parseval), so that the heights need not be read.
+  gap.objective = with_objective ? scale_ * (s[3] - 0.5 * pressure_dot_displacement +
+                                             (delta_before - delta_) * s[4])
+                                 : 0.0;
   return gap;
 }
 

@@ -75,7 +75,9 @@ class DualFormulation final : public Formulation {
  private:
   double scaled_height(std::int64_t i) const { return (heights_[i] - max_height_) / length_unit_; }
   void gap_of(const double *pressure, double pressure_scale, double *gap);
-  void gap_of_iterate(double *gap);
+  // The gap of the current iterate into gap (scaled, before centring); with_energy also
+  // returns sum_i p_i u_i, p the pressure array and u the scaled displacement it makes.
+  double gap_of_iterate(double *gap, bool with_energy);
   void load_state();
 
   System &system_;

@@ -7,6 +7,7 @@
 #include <array>
 #include <chrono>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace asp {
@@ -77,7 +78,8 @@ class Monitor {
   std::chrono::steady_clock::time_point start_;
   Termination termination_ = Termination::iteration_limit;
   std::int64_t iterations_ = 0;
-  double error_ = 0.0;
+  // The last finite error seen; DBL_MAX until there is one (a start that is not finite).
+  double error_ = std::numeric_limits<double>::max();
   double stall_reference_ = 0.0;  // the error the next iterations must beat by 1 %
   std::int64_t stall_since_ = 0;  // iteration at which stall_reference_ was set
   History history_;

@@ -28,8 +28,8 @@ std::vector<OptionSpec> common_options() {
       {"max_iterations", OptionType::integer, 10000, 1, largest_count, false, {},
        "stop after this many iterations"},
       {"stall_window", OptionType::integer, 1000, 0, largest_count, false, {},
-       "stop as stalled when the smallest error has not fallen by 1 % within this many "
-       "iterations (0: never)"},
+       "stop as stalled when this many iterations pass without the error falling below "
+       "0.99 times the last error that did so (0: never)"},
   };
 }
 
