@@ -2,6 +2,7 @@
 // registry's refusals and descriptions, and options by name.
 #include <gtest/gtest.h>
 
+#include <cfloat>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -66,6 +67,12 @@ TEST(Monitor, BreakdownOnANonFiniteErrorKeepsTheLastFiniteOne) {
   EXPECT_TRUE(monitor.should_stop(1, at_error(NAN)));
   EXPECT_EQ(monitor.termination(), asp::Termination::breakdown);
   EXPECT_EQ(monitor.error(), 0.5);
+  // A start that is not finite leaves no finite error: the report says DBL_MAX, which no
+  // tolerance accepts (and never 0, which every tolerance would).
+  asp::Monitor at_start(asp::MonitorSettings{});
+  EXPECT_TRUE(at_start.should_stop(0, at_error(INFINITY)));
+  EXPECT_EQ(at_start.termination(), asp::Termination::breakdown);
+  EXPECT_EQ(at_start.error(), DBL_MAX);
 }
 
 int cancel_at_three(std::int64_t iteration, double, double, void *calls) {
