@@ -125,27 +125,37 @@ double DualFormulation::gap_of_iterate(double *gap, bool with_energy) {
     counters_.transforms += 1;
     linear_updates_ = 0;
   }
-  const double a = step_scale_, b = step_length_;
   // One pass: the pressure's new spectrum (if updated linearly) and the gap's; with the
   // energy, also sum_q C|P_q|^2 over the stored entries, from which p.u follows by Parseval.
-  const auto spectral_step = [&](std::int64_t k) {
-    const Complex p_k = linear ? a * ps[k] - b * s[k] : ps[k];
+  const double a = step_scale_, b = step_length_;
+  const auto updated_pressure = [&](std::int64_t k) {
+    const Complex p_k = a * ps[k] - b * s[k];
     ps[k] = p_k;
+    return p_k;
+  };
+  const auto gap_entry = [&](std::int64_t k, Complex p_k) {
     s[k] = factor * c[k] * p_k - hs[k];
     return c[k] * std::norm(p_k);
   };
   double pressure_dot_displacement = 0.0;
   if (with_energy) {
-    const double all = loops::sums<1>(grid_.reductions(), m, [&](std::int64_t k, double *sum) {
-      sum[0] += spectral_step(k);
-    })[0];
-    const double singles = substrate_.layout().single_entries_sum(
+    const Reductions &reductions = grid_.reductions();
+    const double all =
+        linear ? loops::sums<1>(reductions, m,
+                                [&](std::int64_t k, double *sum) {
+                                  sum[0] += gap_entry(k, updated_pressure(k));
+                                })[0]
+               : loops::sums<1>(reductions, m, [&](std::int64_t k, double *sum) {
+                   sum[0] += gap_entry(k, ps[k]);
+                 })[0];
+    double singles = substrate_.layout().single_entries_sum(
         [&](std::int64_t k) { return c[k] * std::norm(ps[k]); });
-    double parts[1] = {singles};
-    grid_.reductions().combine_sums(parts, 1);
-    pressure_dot_displacement = factor * (2.0 * all - parts[0]);
+    reductions.combine_sums(&singles, 1);
+    pressure_dot_displacement = factor * (2.0 * all - singles);
+  } else if (linear) {
+    loops::for_each(m, [&](std::int64_t k) { gap_entry(k, updated_pressure(k)); });
   } else {
-    loops::for_each(m, [&](std::int64_t k) { spectral_step(k); });
+    loops::for_each(m, [&](std::int64_t k) { gap_entry(k, ps[k]); });
   }
   s[0] -= delta_;
   substrate_.backward(spectrum_.data(), gap);
