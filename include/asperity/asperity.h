@@ -150,12 +150,14 @@ ASP_EXPORT int asp_grid_get_box(const asp_grid *grid, double *lx, double *ly);
 
 /* How hard FFTW looks for fast plans.
  *   ASP_FFT_MEASURE   (default) times candidate algorithms the first time a transform shape
- *                     is needed in the process, and keeps the fastest. Measured cost of that
- *                     first planning on one core: see docs/performance.md (about 0.1 s at
- *                     256^2, a few seconds at 2048^2). Later grids of the same shape, in the
- *                     same process, plan at once; asp_fft_export_wisdom and
- *                     asp_fft_import_wisdom carry that knowledge across processes.
- *   ASP_FFT_ESTIMATE  plans at once from heuristics; transforms usually run 1.5-2x slower.
+ *                     is needed in the process, and keeps the fastest. That first planning
+ *                     took 0.3 s at 256^2, 0.5 s at 512^2, 0.7 s at 1024^2 and 1.1 s at
+ *                     2048^2 on one core of the machine of docs/performance.md. Later grids
+ *                     of the same shape, in the same process, plan at once;
+ *                     asp_fft_export_wisdom and asp_fft_import_wisdom carry that knowledge
+ *                     across processes.
+ *   ASP_FFT_ESTIMATE  plans at once from heuristics; its transforms are as fast on some
+ *                     machines and sizes and up to about 2x slower on others.
  * Plans are made on first use, so set this right after creating the grid; once plans exist
  * the call returns ASP_ERR_INVALID_STATE. */
 #define ASP_FFT_ESTIMATE 101
