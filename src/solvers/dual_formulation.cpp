@@ -281,6 +281,7 @@ DualFormulation::Gap DualFormulation::evaluate_gap(bool with_objective) {
   gap.objective = with_objective ? scale_ * (s[3] - 0.5 * pressure_dot_displacement +
                                              (delta_before - delta_) * s[4])
                                  : 0.0;
+  gap_is_current_ = true;
   return gap;
 }
 
@@ -347,6 +348,7 @@ bool DualFormulation::step(double tau) {
     sum[3] += pi != stepped ? 1.0 : 0.0;
     p[i] = pi;
   });
+  gap_is_current_ = false;
   direction_sum_on_contact_ = s[2];
   step_scale_ = scale;
   step_length_ = tau;
@@ -382,9 +384,25 @@ void DualFormulation::admit_interpenetrating_pixels() {
     scale_ = target_ * static_cast<double>(n_) / sum;
   direction_sum_on_contact_ = 0.0;
   linear_update_ready_ = false;
+  gap_is_current_ = false;
+}
+
+Field &DualFormulation::variable() {
+  // A generic solver reads and writes the iterate itself: the pending scale of the pressure
+  // array is folded in, and the gap and the pressure's spectrum count as stale from here on.
+  if (scale_ != 1.0) {
+    double *p = state_.pressure.data();
+    const double scale = scale_;
+    loops::for_each(n_, [&](std::int64_t i) { p[i] *= scale; });
+    scale_ = 1.0;
+  }
+  linear_update_ready_ = false;
+  gap_is_current_ = false;
+  return state_.pressure;
 }
 
 bool DualFormulation::finish() {
+  if (!gap_is_current_) evaluate_gap(false);
   // The arrays hold p/scale and g + shift (scaled): turn them into the physical state.
   double *p = state_.pressure.data();
   double *g = state_.gap.data();

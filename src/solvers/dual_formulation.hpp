@@ -33,11 +33,13 @@ class DualFormulation final : public Formulation {
 
   // ---- Formulation
   std::int64_t size() const override { return n_; }
-  Field &variable() override { return state_.pressure; }
+  Field &variable() override;
   double value_and_gradient(const double *x, double *gradient) override;
   void hessian_product(const double *direction, double *product) override;
   double dot(const double *a, const double *b) const override;
   double lower_bound() const override { return 0.0; }
+  bool constrains_mean() const override { return control_ == Control::mean_pressure; }
+  double mean_target() const override { return target_; }
   double error(const double *x, const double *gradient) const override;
 
   // Converts scaled objective values to the physical energy (per unit length in 1D).
@@ -113,6 +115,9 @@ class DualFormulation final : public Formulation {
   double step_scale_ = 1.0;
   double step_length_ = 0.0;
   bool linear_update_ready_ = false;
+  // Whether the state's gap array holds the gap of the current iterate (evaluate_gap was the
+  // last to touch either); finish() evaluates it otherwise.
+  bool gap_is_current_ = false;
   int linear_updates_ = 0;
 };
 

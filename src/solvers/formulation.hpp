@@ -26,7 +26,7 @@ class Formulation {
  public:
   virtual ~Formulation() = default;
 
-  // Number of unknowns and the current iterate.
+  // Number of unknowns and the current iterate, which a solver reads and writes in place.
   virtual std::int64_t size() const = 0;
   virtual Field &variable() = 0;
 
@@ -38,12 +38,18 @@ class Formulation {
   virtual double dot(const double *a, const double *b) const = 0;
   // Bound constraints x >= lower_bound() on every unknown (-infinity: none).
   virtual double lower_bound() const = 0;
+  // The mean-value constraint of the control, if it imposes one: the mean of the unknowns
+  // must equal mean_target(). A solver that moves the iterate restores it (for example by
+  // rescaling, or by removing the gradient's mean over the free unknowns).
+  virtual bool constrains_mean() const = 0;
+  virtual double mean_target() const = 0;
   // The error measure of DESIGN.md section 2 at x with this gradient: the largest projected
   // force-balance residual, divided by the reference pressure.
   virtual double error(const double *x, const double *gradient) const = 0;
 
-  // Writes the iterate back into the system's state in physical units. Returns false if a
-  // physical value is not finite (the caller then resets the state).
+  // Writes the iterate back into the system's state in physical units, with everything that
+  // follows from it (gap, penetration). Returns false if a physical value is not finite (the
+  // caller then resets the state).
   virtual bool finish() = 0;
 
   const Counters &counters() const { return counters_; }

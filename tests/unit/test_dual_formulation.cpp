@@ -605,6 +605,40 @@ TEST_P(DualFormulationState, GapAfterFinishIsThatOfThePressure) {
   expect_gap_of_pressure(s, "construct, one gap, finish");
 }
 
+// A generic solver sees only the Formulation interface: it writes its own iterate, with the
+// mean the constraint asks for, and finish() must store that pressure and the gap it makes.
+TEST_P(DualFormulationState, FinishStoresAnIterateWrittenThroughTheInterface) {
+  const Case c = GetParam();
+  SceneSetup s = make_setup(c);
+  // A warm state whose pressure the formulation holds with a pending scale (load control).
+  asp::Random random(47);
+  for (double &p : s.system->state().pressure) p = 0.02 * s.modulus * random.uniform();
+  asp::DualFormulation dual(*s.system, c.control, s.value);
+  asp::Formulation &f = dual;
+  EXPECT_EQ(f.constrains_mean(), c.control == Control::mean_pressure);
+  asp::Field &x = f.variable();
+  double mean = 0.0;
+  for (double &xi : x) {
+    xi = random.uniform() < 0.5 ? 0.0 : random.uniform();
+    mean += xi / static_cast<double>(x.size());
+  }
+  if (f.constrains_mean())
+    for (double &xi : x) xi *= f.mean_target() / mean;
+  const std::vector<double> written(x.begin(), x.end());
+  ASSERT_TRUE(f.finish());
+  expect_gap_of_pressure(s, "iterate written through the interface");
+  // The stored pressure is the written iterate in physical units: one common factor.
+  const std::size_t largest = static_cast<std::size_t>(
+      std::max_element(written.begin(), written.end()) - written.begin());
+  const double unit = s.system->state().pressure[largest] / written[largest];
+  for (std::size_t i = 0; i < written.size(); ++i)
+    ASSERT_NEAR(s.system->state().pressure[i], unit * written[i], 1e-15 * unit * written[i]);
+  if (c.control == Control::mean_pressure)
+    EXPECT_NEAR(s.system->mean_pressure(), s.value, 1e-14 * s.value);
+  else
+    EXPECT_NEAR(s.system->state().penetration, s.value, 1e-15 * s.value);
+}
+
 // Polonsky & Keer's own error (update_direction) follows the same definition: a negative
 // penetration leaves every gap open and no pressure, a state without any violation.
 TEST_P(DualFormulationScene, NoContactHasErrorZero) {
