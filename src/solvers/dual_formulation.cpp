@@ -208,6 +208,11 @@ double DualFormulation::error(const double *x, const double *gradient) const {
   });
 }
 
+double DualFormulation::contact_fraction(const double *x) const {
+  const double n = static_cast<double>(n_);
+  return loops::sum(grid_.reductions(), n_, [&](std::int64_t i) { return x[i] > 0.0 ? 1.0 : 0.0; }) / n;
+}
+
 // ---- Polonsky & Keer's steps --------------------------------------------------------------
 
 void DualFormulation::load_state() {

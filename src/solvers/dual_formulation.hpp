@@ -42,8 +42,10 @@ class DualFormulation final : public Formulation {
   double mean_target() const override { return target_; }
   double error(const double *x, const double *gradient) const override;
 
+  double contact_fraction(const double *x) const override;
   // Converts scaled objective values to the physical energy (per unit length in 1D).
-  double energy_unit() const { return energy_unit_; }
+  double energy_unit() const override { return energy_unit_; }
+  const Reductions &reductions() const override { return grid_.reductions(); }
 
   // ---- Polonsky & Keer's steps (the constructor has loaded the starting iterate)
 

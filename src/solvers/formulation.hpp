@@ -13,6 +13,7 @@
 #include <cstdint>
 
 #include "core/aligned_field.hpp"
+#include "core/reductions.hpp"
 
 namespace asp {
 
@@ -46,6 +47,13 @@ class Formulation {
   // The error measure of DESIGN.md section 2 at x with this gradient: the largest projected
   // force-balance residual, divided by the reference pressure.
   virtual double error(const double *x, const double *gradient) const = 0;
+
+  // For the monitor's history: the fraction of pixels in repulsive contact at x, and the
+  // factor that turns objective values into the physical energy.
+  virtual double contact_fraction(const double *x) const = 0;
+  virtual double energy_unit() const = 0;
+  // Combines a solver's own sums and maxima over the unknowns this process holds.
+  virtual const Reductions &reductions() const = 0;
 
   // Writes the iterate back into the system's state in physical units, with everything that
   // follows from it (gap, penetration). Returns false if a physical value is not finite (the

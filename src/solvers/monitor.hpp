@@ -65,6 +65,8 @@ class Monitor {
 
   // The solver found a non-finite value the monitor could not see (e.g. in physical units).
   void declare_breakdown() { termination_ = Termination::breakdown; }
+  // The algorithm has no step left to take (no descent direction) short of the tolerance.
+  void declare_stalled() { termination_ = Termination::stalled; }
 
   Termination termination() const { return termination_; }
   std::int64_t iterations() const { return iterations_; }

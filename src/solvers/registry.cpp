@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "core/error.hpp"
+#include "solvers/bugnicourt.hpp"
 #include "solvers/polonsky_keer.hpp"
 
 namespace asp {
@@ -56,7 +57,8 @@ std::string number_text(double v) {
 }  // namespace
 
 const std::vector<AlgorithmSpec> &algorithms() {
-  static const std::vector<AlgorithmSpec> all = {with_common_options(polonsky_keer_algorithm())};
+  static const std::vector<AlgorithmSpec> all = {with_common_options(polonsky_keer_algorithm()),
+                                                 with_common_options(bugnicourt_algorithm())};
   return all;
 }
 

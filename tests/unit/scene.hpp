@@ -50,15 +50,22 @@ inline std::vector<double> rough_surface(const asp::Grid &grid, std::uint64_t se
   return h;
 }
 
-// Runs a PK solve and returns the report.
-inline asp::SolveReport solve_pk(asp::System &system, asp::Control control, double value,
-                                 double tolerance = 1e-10,
-                                 std::int64_t max_iterations = 100000) {
-  asp::Solver solver("pk");
+// Runs a solve with the named algorithm and returns the report.
+inline asp::SolveReport solve_with(const char *algorithm, asp::System &system,
+                                   asp::Control control, double value,
+                                   double tolerance = 1e-10,
+                                   std::int64_t max_iterations = 100000) {
+  asp::Solver solver(algorithm);
   solver.set_option("tolerance", tolerance);
   solver.set_option("max_iterations", static_cast<double>(max_iterations));
   solver.solve(system, control, value);
   return solver.report();
+}
+
+inline asp::SolveReport solve_pk(asp::System &system, asp::Control control, double value,
+                                 double tolerance = 1e-10,
+                                 std::int64_t max_iterations = 100000) {
+  return solve_with("pk", system, control, value, tolerance, max_iterations);
 }
 
 // Distance of x from the origin on a periodic interval of length l, in [0, l/2].
