@@ -85,7 +85,8 @@ IterationState observe(const Formulation &f, const double *x, const double *grad
                        double value, const Monitor &monitor) {
   IterationState state;
   state.error = f.error(x, gradient);
-  state.objective = monitor.wants_objective() ? value * f.energy_unit() : 0.0;
+  state.objective =
+      monitor.wants_objective() ? f.reported_objective(x, gradient, value) * f.energy_unit() : 0.0;
   state.contact_fraction = monitor.wants_objective() ? f.contact_fraction(x) : 0.0;
   state.evaluations = f.counters().evaluations;
   state.transforms = f.counters().transforms;

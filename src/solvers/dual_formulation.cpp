@@ -213,6 +213,21 @@ double DualFormulation::contact_fraction(const double *x) const {
   return loops::sum(grid_.reductions(), n_, [&](std::int64_t i) { return x[i] > 0.0 ? 1.0 : 0.0; }) / n;
 }
 
+double DualFormulation::reported_objective(const double *x, const double *gradient,
+                                           double value) const {
+  // value = sum x (u/2 - w - delta) with the stored delta; under load control the
+  // penetration is the multiplier, whose current estimate is delta plus the mean gradient over
+  // the contact set (as evaluate_gap takes it for Polonsky-Keer's history).
+  if (control_ != Control::mean_pressure) return value;
+  const auto s = loops::sums<3>(grid_.reductions(), n_, [&](std::int64_t i, double *sum) {
+    const double in = x[i] > 0.0 ? 1.0 : 0.0;
+    sum[0] += in * gradient[i];
+    sum[1] += in;
+    sum[2] += x[i];
+  });
+  return s[1] > 0.0 ? value - (s[0] / s[1]) * s[2] : value;
+}
+
 // ---- Polonsky & Keer's steps --------------------------------------------------------------
 
 void DualFormulation::load_state() {

@@ -43,6 +43,8 @@ class DualFormulation final : public Formulation {
   double error(const double *x, const double *gradient) const override;
 
   double contact_fraction(const double *x) const override;
+  double reported_objective(const double *x, const double *gradient,
+                            double value) const override;
   // Converts scaled objective values to the physical energy (per unit length in 1D).
   double energy_unit() const override { return energy_unit_; }
   const Reductions &reductions() const override { return grid_.reductions(); }

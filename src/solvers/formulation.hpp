@@ -48,9 +48,14 @@ class Formulation {
   // force-balance residual, divided by the reference pressure.
   virtual double error(const double *x, const double *gradient) const = 0;
 
-  // For the monitor's history: the fraction of pixels in repulsive contact at x, and the
-  // factor that turns objective values into the physical energy.
+  // For the monitor's history: the fraction of pixels in repulsive contact at x; the objective
+  // as histories report it, from value_and_gradient's value and gradient at x (under a mean
+  // constraint its constant multiplier term uses the multiplier's current estimate, so that
+  // all solvers report the same number for the same iterate); and the factor that turns
+  // objective values into the physical energy.
   virtual double contact_fraction(const double *x) const = 0;
+  virtual double reported_objective(const double *x, const double *gradient,
+                                    double value) const = 0;
   virtual double energy_unit() const = 0;
   // Combines a solver's own sums and maxima over the unknowns this process holds.
   virtual const Reductions &reductions() const = 0;

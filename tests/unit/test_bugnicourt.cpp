@@ -150,6 +150,31 @@ TEST(Bugnicourt, WarmStartsConverge) {
   EXPECT_EQ(again.iterations, 0);
 }
 
+// The history's objective is the same function for both solvers: at their converged states
+// (error 1e-11) the last rows agree to the solution's accuracy, under both controls.
+TEST(Bugnicourt, HistoryObjectiveIsPolonskyKeers) {
+  auto grid = asp_test::grid_2d(48, 40, 1.0, 40.0 / 48.0);
+  const auto h = asp_test::rough_surface(*grid, 5, 0.1);
+  double penetration = 0.0;
+  for (Control control : {Control::mean_pressure, Control::penetration}) {
+    double last[2] = {0.0, 0.0};
+    int k = 0;
+    for (const char *algorithm : {"pk", "bugnicourt"}) {
+      asp::System system(grid, 1.0);
+      system.set_topography(h.data());
+      asp::Solver solver(algorithm);
+      solver.set_option("tolerance", 1e-11);
+      solver.set_history(true);
+      solver.solve(system, control, control == Control::mean_pressure ? 0.01 : penetration);
+      ASSERT_TRUE(solver.report().converged()) << algorithm;
+      last[k++] = solver.history().back()[static_cast<int>(asp::HistoryColumn::objective)];
+      if (control == Control::mean_pressure) penetration = system.state().penetration;
+    }
+    EXPECT_NEAR(last[1], last[0], 1e-9 * std::fabs(last[0]))
+        << (control == Control::mean_pressure ? "load" : "penetration");
+  }
+}
+
 TEST(Bugnicourt, RefusesWhatItCannotServe) {
   asp::Solver solver("bugnicourt");
   EXPECT_THROW(solver.set_option("variable", std::string("gap")), asp::Error);
