@@ -2,12 +2,10 @@
 
 #include <algorithm>
 #include <array>
-#include <cfloat>
 #include <cmath>
 
-#include "core/checks.hpp"
-#include "core/error.hpp"
 #include "core/loops.hpp"
+#include "solvers/scene_units.hpp"
 
 namespace asp {
 
@@ -15,12 +13,6 @@ namespace {
 // Linear updates of the pressure's spectrum between two transforms of it (see
 // gap_of_iterate): rounding grows with their number, a transform costs 1/3 of an iteration.
 constexpr int linear_updates_between_transforms = 32;
-
-// Scaled numbers beyond this would leave too little room for sums of squares over a grid.
-constexpr double largest_scaled = 1e100;
-
-bool representable(double v) { return std::isfinite(v) && std::fabs(v) <= DBL_MAX / 16; }
-bool normal(double v) { return std::isfinite(v) && v >= DBL_MIN; }
 }  // namespace
 
 DualFormulation::DualFormulation(System &system, Control control, double value)
@@ -33,44 +25,13 @@ DualFormulation::DualFormulation(System &system, Control control, double value)
       control_(control),
       n_(system.grid().n_pixels()),
       compliance_(system.substrate().normalised_compliance()) {
-  const bool load = control == Control::mean_pressure;
-  const double k = substrate_.pixel_stiffness();
-  const double control_scale = load ? std::fabs(value) : substrate_.k0() * std::fabs(value);
-  pressure_unit_ = system.reference_pressure(std::isfinite(control_scale) ? control_scale : 0.0);
-  length_unit_ = pressure_unit_ / k;
-  energy_unit_ = grid_.pixel_area() * pressure_unit_ * length_unit_;
-  target_ = load ? value / pressure_unit_ : value / length_unit_;
-  compliance_factor_ = k;
+  const SceneUnits units = scene_units(system, control, value);
+  pressure_unit_ = units.pressure;
+  length_unit_ = units.length;
+  energy_unit_ = units.energy;
+  target_ = units.target;
+  compliance_factor_ = substrate_.pixel_stiffness();
   const double n = static_cast<double>(n_);
-
-  // The scene in these units, and what its results will need in physical units.
-  const double range = system.height_range() / length_unit_;
-  // Under load control the mean displacement pbar/K~(0) joins the penetration; a soft mean
-  // mode (small K~(0)) makes it much larger than the pressure scale.
-  const double mean_displacement = load ? std::fabs(target_) * (k / substrate_.k0()) : 0.0;
-  const double extent = 1.0 + std::fabs(target_) + range + mean_displacement;
-  if (!normal(pressure_unit_) || !normal(length_unit_))
-    throw Error(Status::invalid_argument,
-                "the scene's pressure scale " + format_number(pressure_unit_) +
-                    " or length scale " + format_number(length_unit_) +
-                    " is not a normal double; rescale the modulus or the heights");
-  if (!(std::fabs(target_) <= largest_scaled))
-    throw Error(Status::invalid_argument,
-                "argument 'value' is " + format_number(value) + ", " +
-                    format_number(std::fabs(target_)) + " times the scene's " +
-                    (load ? "pressure" : "length") + " scale " +
-                    format_number(load ? pressure_unit_ : length_unit_) +
-                    "; such a solve cannot be represented in doubles");
-  if (!(range <= largest_scaled) || !(mean_displacement <= largest_scaled) ||
-      !representable(pressure_unit_ * n * extent) ||
-      !representable(length_unit_ * n * extent) ||
-      !representable(energy_unit_ * n * extent * extent))
-    throw Error(Status::invalid_argument,
-                "argument 'value' is " + format_number(value) +
-                    ": with heights spanning " + format_number(system.height_range()) +
-                    " and K~(0) = " + format_number(substrate_.k0()) +
-                    " the pressures, gaps, displacements or energies of this solve would "
-                    "overflow a double; rescale the units");
 
   // Work arrays before anything changes, so that running out of memory changes nothing.
   direction_ = grid_.make_field();

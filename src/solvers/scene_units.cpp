@@ -1,0 +1,60 @@
+#include "solvers/scene_units.hpp"
+
+#include <cfloat>
+#include <cmath>
+
+#include "core/checks.hpp"
+#include "core/error.hpp"
+
+namespace asp {
+namespace {
+// Scaled numbers beyond this would leave too little room for sums of squares over a grid.
+constexpr double largest_scaled = 1e100;
+
+bool representable(double v) { return std::isfinite(v) && std::fabs(v) <= DBL_MAX / 16; }
+bool normal(double v) { return std::isfinite(v) && v >= DBL_MIN; }
+}  // namespace
+
+SceneUnits scene_units(const System &system, Control control, double value) {
+  const Substrate &substrate = system.substrate();
+  const bool load = control == Control::mean_pressure;
+  const double k = substrate.pixel_stiffness();
+  const double control_scale = load ? std::fabs(value) : substrate.k0() * std::fabs(value);
+  SceneUnits units;
+  units.pressure = system.reference_pressure(std::isfinite(control_scale) ? control_scale : 0.0);
+  units.length = units.pressure / k;
+  units.energy = system.grid().pixel_area() * units.pressure * units.length;
+  units.target = load ? value / units.pressure : value / units.length;
+  const double n = static_cast<double>(system.grid().n_pixels());
+
+  // The scene in these units, and what its results will need in physical units.
+  const double range = system.height_range() / units.length;
+  // Under load control the mean displacement pbar/K~(0) joins the penetration; a soft mean
+  // mode (small K~(0)) makes it much larger than the pressure scale.
+  const double mean_displacement = load ? std::fabs(units.target) * (k / substrate.k0()) : 0.0;
+  const double extent = 1.0 + std::fabs(units.target) + range + mean_displacement;
+  if (!normal(units.pressure) || !normal(units.length))
+    throw Error(Status::invalid_argument,
+                "the scene's pressure scale " + format_number(units.pressure) +
+                    " or length scale " + format_number(units.length) +
+                    " is not a normal double; rescale the modulus or the heights");
+  if (!(std::fabs(units.target) <= largest_scaled))
+    throw Error(Status::invalid_argument,
+                "argument 'value' is " + format_number(value) + ", " +
+                    format_number(std::fabs(units.target)) + " times the scene's " +
+                    (load ? "pressure" : "length") + " scale " +
+                    format_number(load ? units.pressure : units.length) +
+                    "; such a solve cannot be represented in doubles");
+  if (!(range <= largest_scaled) || !(mean_displacement <= largest_scaled) ||
+      !representable(units.pressure * n * extent) || !representable(units.length * n * extent) ||
+      !representable(units.energy * n * extent * extent))
+    throw Error(Status::invalid_argument,
+                "argument 'value' is " + format_number(value) + ": with heights spanning " +
+                    format_number(system.height_range()) + " and K~(0) = " +
+                    format_number(substrate.k0()) +
+                    " the pressures, gaps, displacements or energies of this solve would "
+                    "overflow a double; rescale the units");
+  return units;
+}
+
+}  // namespace asp
