@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/loops.hpp"
+#include "solvers/bound_residual.hpp"
 #include "solvers/scene_units.hpp"
 
 namespace asp {
@@ -151,22 +152,9 @@ double DualFormulation::dot(const double *a, const double *b) const {
 }
 
 double DualFormulation::error(const double *x, const double *gradient) const {
-  // Under load control the penetration is the multiplier of the mean: the gradient counts
-  // relative to its mean over the contact set.
-  double shift = 0.0;
-  if (control_ == Control::mean_pressure) {
-    const auto sums = loops::sums<2>(grid_.reductions(), n_, [&](std::int64_t i, double *s) {
-      const double in = x[i] > 0.0 ? 1.0 : 0.0;
-      s[0] += in * gradient[i];
-      s[1] += in;
-    });
-    shift = sums[1] > 0.0 ? sums[0] / sums[1] : 0.0;
-  }
-  return loops::maximum(grid_.reductions(), n_, [&](std::int64_t i) {
-    const double g = gradient[i] - shift;
-    // max(-g, 0) where x = 0 (an open gap is no violation), NaN kept.
-    return x[i] > 0.0 ? std::fabs(g) : (g > 0.0 ? 0.0 : -g);
-  });
+  // Under load control the penetration is the multiplier of the mean.
+  return bound_residual(grid_.reductions(), n_, x, gradient, 0.0,
+                        control_ == Control::mean_pressure);
 }
 
 double DualFormulation::contact_fraction(const double *x) const {

@@ -1,0 +1,18 @@
+// The error measure of DESIGN.md section 2 for a bound-constrained problem: the largest
+// residual of the optimality conditions, with the gradient in pressure units. Where the
+// unknown is above its bound the gradient must vanish (|r|); where it sits on the bound the
+// gradient may only point into the feasible set (max(-r, 0)). Under a mean-value constraint
+// the gradient counts relative to its mean over the free unknowns, the constraint's multiplier.
+#pragma once
+
+#include <cstdint>
+
+#include "core/reductions.hpp"
+
+namespace asp {
+
+// NaN in the gradient is returned as NaN, so that the monitor sees it.
+double bound_residual(const Reductions &reductions, std::int64_t n, const double *x,
+                      const double *gradient, double lower, bool mean_constrained);
+
+}  // namespace asp
