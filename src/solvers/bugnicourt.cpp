@@ -4,6 +4,7 @@
 
 #include "core/loops.hpp"
 #include "solvers/dual_formulation.hpp"
+#include "solvers/primal_formulation.hpp"
 #include "solvers/solver.hpp"
 
 namespace asp {
@@ -134,10 +135,27 @@ void bugnicourt(Formulation &f, Monitor &monitor) {
   }
 }
 
-void run(System &system, Control control, double value, const OptionValues &, Monitor &monitor) {
-  DualFormulation formulation(system, control, value);
+bool on_the_gap(const OptionValues &options) { return options.text("variable") == "gap"; }
+
+ControlsOffered controls_for(const OptionValues &options) {
+  if (on_the_gap(options))
+    return {{Control::mean_gap, Control::penetration}, "variable = gap"};
+  return {{Control::mean_pressure, Control::penetration}, "variable = pressure"};
+}
+
+template <class Variable>
+void run_on(System &system, Control control, double value, Monitor &monitor) {
+  Variable formulation(system, control, value);
   bugnicourt(formulation, monitor);
   conclude(formulation, system, monitor);
+}
+
+void run(System &system, Control control, double value, const OptionValues &options,
+         Monitor &monitor) {
+  if (on_the_gap(options))
+    run_on<PrimalFormulation>(system, control, value, monitor);
+  else
+    run_on<DualFormulation>(system, control, value, monitor);
 }
 
 }  // namespace
@@ -147,13 +165,15 @@ AlgorithmSpec bugnicourt_algorithm() {
   spec.name = "bugnicourt";
   spec.summary =
       "Bugnicourt et al.'s constrained conjugate gradient (OUT-LIN, Tribol. Lett. 2018; "
-      "thesis section 3.1.2, Alg. 4) on the pressure; the objective is the complementary "
-      "energy, as for pk";
-  spec.controls = {Control::mean_pressure, Control::penetration};
+      "thesis section 3.1.2, Alg. 4) on the pressure (the objective is the complementary "
+      "energy, as for pk) or on the gap (the elastic energy)";
+  spec.controls = {Control::mean_pressure, Control::mean_gap, Control::penetration};
+  spec.controls_for = controls_for;
   spec.substrates = {SubstrateKind::periodic};
   spec.interactions = {InteractionKind::hard_wall};
-  spec.options = {{"variable", OptionType::choice, 0.0, 0.0, 0.0, false, {"pressure"},
-                   "the unknown: pressure (the dual problem)"}};
+  spec.options = {{"variable", OptionType::choice, 0.0, 0.0, 0.0, false, {"pressure", "gap"},
+                   "the unknown: pressure (the dual problem; mean-pressure or penetration "
+                   "control) or gap (the primal; mean-gap or penetration control)"}};
   spec.run = run;
   return spec;
 }

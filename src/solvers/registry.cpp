@@ -71,12 +71,18 @@ const AlgorithmSpec &find_algorithm(const std::string &name) {
                   ")");
 }
 
-void check_request(const AlgorithmSpec &algorithm, const System &system, Control control) {
-  const auto &c = algorithm.controls;
+void check_request(const AlgorithmSpec &algorithm, const OptionValues &options,
+                   const System &system, Control control) {
+  const ControlsOffered offered = algorithm.controls_for != nullptr
+                                      ? algorithm.controls_for(options)
+                                      : ControlsOffered{algorithm.controls, ""};
+  const auto &c = offered.controls;
   if (std::find(c.begin(), c.end(), control) == c.end())
-    throw Error(Status::unsupported, "solver '" + algorithm.name + "' does not offer " +
-                                         control_name(control) + " control (it offers: " +
-                                         names(c, control_name) + ")");
+    throw Error(Status::unsupported,
+                "solver '" + algorithm.name + "'" +
+                    (offered.condition.empty() ? "" : " with " + offered.condition) +
+                    " does not offer " + control_name(control) + " control (it offers: " +
+                    names(c, control_name) + ")");
   const auto &s = algorithm.substrates;
   if (std::find(s.begin(), s.end(), system.substrate().kind()) == s.end())
     throw Error(Status::unsupported, "solver '" + algorithm.name + "' does not work on a " +

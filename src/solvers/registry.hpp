@@ -35,10 +35,19 @@ struct OptionValues {
   const std::string &text(const std::string &name) const { return texts.at(name); }
 };
 
+// The controls an algorithm serves with given option values, and which values those are
+// (for the refusal's message, e.g. "variable = gap").
+struct ControlsOffered {
+  std::vector<Control> controls;
+  std::string condition;
+};
+
 struct AlgorithmSpec {
   std::string name;
   std::string summary;
-  std::vector<Control> controls;
+  std::vector<Control> controls;  // with any option values
+  // The controls with these option values, when they depend on them (null: `controls`).
+  ControlsOffered (*controls_for)(const OptionValues &options) = nullptr;
   std::vector<SubstrateKind> substrates;
   std::vector<InteractionKind> interactions;
   std::vector<OptionSpec> options;  // every option, the common ones first
@@ -52,7 +61,8 @@ const std::vector<AlgorithmSpec> &algorithms();
 // Throws Error(unsupported) naming the known algorithms if there is no such algorithm.
 const AlgorithmSpec &find_algorithm(const std::string &name);
 // Throws Error(unsupported) with a message naming what the algorithm does not serve.
-void check_request(const AlgorithmSpec &algorithm, const System &system, Control control);
+void check_request(const AlgorithmSpec &algorithm, const OptionValues &options,
+                   const System &system, Control control);
 // The algorithm, what it serves and its options, as text (asp_solver_describe).
 std::string describe(const AlgorithmSpec &algorithm);
 

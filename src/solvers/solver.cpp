@@ -90,13 +90,16 @@ void Solver::forget_last_solve() {
 
 void Solver::solve(System &system, Control control, double value) {
   forget_last_solve();
-  check_request(algorithm_, system, control);
+  check_request(algorithm_, options_, system, control);
   require_finite(value, "value");
   if (control == Control::mean_pressure && value < 0.0 &&
       system.interaction().kind() == InteractionKind::hard_wall)
     throw Error(Status::invalid_argument,
                 "argument 'value' is " + format_number(value) +
                     ": a non-adhesive hard wall cannot carry a negative mean pressure");
+  if (control == Control::mean_gap && value < 0.0)
+    throw Error(Status::invalid_argument, "argument 'value' is " + format_number(value) +
+                                              ": a mean gap cannot be negative");
 
   MonitorSettings settings;
   settings.tolerance = options_.number("tolerance");

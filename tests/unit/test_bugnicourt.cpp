@@ -175,19 +175,65 @@ TEST(Bugnicourt, HistoryObjectiveIsPolonskyKeers) {
   }
 }
 
+// On the gap (the primal): the same unique solution again, under penetration control and
+// under mean-gap control with the mean gap of Polonsky-Keer's solution; tolerances as above.
+TEST_P(AgreesWithPolonskyKeer, OnTheGapToo) {
+  const Case c = GetParam();
+  const double slope = 0.1, modulus = 1.0, tolerance = 1e-11;
+  auto grid = c.dimension == 1 ? asp_test::grid_1d(c.nx, 1.0)
+                               : asp_test::grid_2d(c.nx, c.ny, 1.0, 1.0 * c.ny / c.nx);
+  const auto heights = c.dimension == 1 || c.ny > 1
+                           ? asp_test::rough_surface(*grid, 7, slope)
+                           : asp_test::rough_surface(*asp_test::grid_1d(c.nx, 1.0), 7, slope);
+  asp::System pk(grid, modulus);
+  pk.set_topography(heights.data());
+  ASSERT_TRUE(
+      asp_test::solve_pk(pk, Control::mean_pressure, c.mean_pressure * modulus * slope, tolerance)
+          .converged());
+  const Control control = c.control == Control::mean_pressure ? Control::mean_gap : c.control;
+  const double value =
+      control == Control::mean_gap ? pk.mean_gap() : pk.state().penetration;
+  asp::System primal(grid, modulus);
+  primal.set_topography(heights.data());
+  asp::Solver solver("bugnicourt");
+  solver.set_option("variable", std::string("gap"));
+  solver.set_option("tolerance", tolerance);
+  solver.solve(primal, control, value);
+  ASSERT_TRUE(solver.report().converged()) << "error " << solver.report().error;
+  const double dp = max_abs_difference(pk.state().pressure, primal.state().pressure);
+  const double dg = max_abs_difference(pk.state().gap, primal.state().gap);
+  std::printf("%s on the gap: %lld iterations, |dp|/p_max = %.1e, |dg|/range = %.1e\n", c.name,
+              static_cast<long long>(solver.report().iterations),
+              dp / max_abs(pk.state().pressure), dg / primal.height_range());
+  EXPECT_LE(dp, 1e-8 * max_abs(pk.state().pressure));
+  EXPECT_LE(dg, 1e-8 * primal.height_range());
+  EXPECT_NEAR(primal.mean_pressure(), pk.mean_pressure(), 1e-8 * pk.mean_pressure());
+  EXPECT_NEAR(primal.state().penetration, pk.state().penetration, 1e-8 * primal.height_range());
+  EXPECT_NEAR(primal.mean_gap(), pk.mean_gap(), 1e-8 * primal.height_range());
+  EXPECT_EQ(primal.contact_fraction(), pk.contact_fraction());
+}
+
 TEST(Bugnicourt, RefusesWhatItCannotServe) {
   asp::Solver solver("bugnicourt");
-  EXPECT_THROW(solver.set_option("variable", std::string("gap")), asp::Error);
-  solver.set_option("variable", std::string("pressure"));
+  EXPECT_THROW(solver.set_option("variable", std::string("displacement")), asp::Error);
   auto grid = asp_test::grid_2d(8, 8, 1.0, 1.0);
   asp::System system(grid, 1.0);
-  try {
-    solver.solve(system, Control::mean_gap, 0.1);
-    ADD_FAILURE() << "mean-gap control was accepted";
-  } catch (const asp::Error &e) {
-    EXPECT_EQ(e.status(), asp::Status::unsupported);
-    EXPECT_NE(std::string(e.what()).find("bugnicourt"), std::string::npos);
+  // Each variable with the control of the other.
+  for (const char *variable : {"pressure", "gap"}) {
+    solver.set_option("variable", std::string(variable));
+    const Control control =
+        std::string(variable) == "gap" ? Control::mean_pressure : Control::mean_gap;
+    try {
+      solver.solve(system, control, 0.1);
+      ADD_FAILURE() << variable << ": the other variable's control was accepted";
+    } catch (const asp::Error &e) {
+      EXPECT_EQ(e.status(), asp::Status::unsupported);
+      EXPECT_NE(std::string(e.what()).find(std::string("variable = ") + variable),
+                std::string::npos)
+          << e.what();
+    }
   }
+  EXPECT_THROW(solver.solve(system, Control::mean_gap, -0.1), asp::Error);
 }
 
 }  // namespace

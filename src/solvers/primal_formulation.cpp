@@ -1,0 +1,151 @@
+#include "solvers/primal_formulation.hpp"
+
+#include <cmath>
+
+#include "core/loops.hpp"
+#include "solvers/bound_residual.hpp"
+#include "solvers/scene_units.hpp"
+
+namespace asp {
+
+PrimalFormulation::PrimalFormulation(System &system, Control control, double value)
+    : system_(system),
+      substrate_(system.substrate()),
+      grid_(system.grid()),
+      state_(system.state()),
+      heights_(system.heights().data()),
+      max_height_(system.max_height()),
+      control_(control),
+      n_(system.grid().n_pixels()),
+      stiffness_(system.substrate().normalised_stiffness()) {
+  const SceneUnits units = scene_units(system, control, value);
+  pressure_unit_ = units.pressure;
+  length_unit_ = units.length;
+  energy_unit_ = units.energy;
+  target_ = units.target;
+  penetration_ = control == Control::penetration ? target_ : 0.0;
+
+  // Work arrays before anything changes, so that running out of memory changes nothing.
+  displacement_ = grid_.make_field();
+  spectrum_ = substrate_.make_spectrum();
+
+  // The stored gap as the starting iterate, in units of P/k.
+  double *g = state_.gap.data();
+  const double per_length = 1.0 / length_unit_;
+  const double total = loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
+    g[i] = (g[i] > 0.0 ? g[i] : 0.0) * per_length;
+    return g[i];
+  });
+  if (control == Control::mean_gap) {
+    const double n = static_cast<double>(n_);
+    if (total > 0.0) {
+      const double factor = target_ * n / total;
+      loops::for_each(n_, [&](std::int64_t i) { g[i] *= factor; });
+    } else {
+      loops::for_each(n_, [&](std::int64_t i) { g[i] = target_; });
+    }
+  }
+}
+
+void PrimalFormulation::apply_stiffness(const double *field, double *out) {
+  // K~/k with the transform's 1/N: the scaled stiffness, pixel stiffness 1.
+  substrate_.forward(field, spectrum_.data());
+  Complex *s = spectrum_.data();
+  const double *k = stiffness_.data();
+  const double factor = 1.0 / substrate_.pixel_stiffness();
+  loops::for_each(static_cast<std::int64_t>(spectrum_.size()),
+                  [&](std::int64_t q) { s[q] *= factor * k[q]; });
+  // The q = 0 entry is the first: without K~(0) under mean-gap control.
+  if (control_ == Control::mean_gap) s[0] = 0.0;
+  substrate_.backward(spectrum_.data(), out);
+  counters_.transforms += 2;
+}
+
+double PrimalFormulation::value_and_gradient(const double *x, double *gradient) {
+  // u = x + (h - max h)/l + delta, then p = K u and E = (1/2) u.p, all scaled.
+  double *u = displacement_.data();
+  const double per_length = 1.0 / length_unit_, top = max_height_, delta = penetration_;
+  loops::for_each(n_, [&](std::int64_t i) {
+    u[i] = x[i] + (heights_[i] - top) * per_length + delta;
+  });
+  apply_stiffness(u, gradient);
+  counters_.evaluations += 1;
+  return 0.5 * loops::sum(grid_.reductions(), n_,
+                          [&](std::int64_t i) { return u[i] * gradient[i]; });
+}
+
+void PrimalFormulation::hessian_product(const double *direction, double *product) {
+  apply_stiffness(direction, product);
+}
+
+double PrimalFormulation::dot(const double *a, const double *b) const {
+  return loops::sum(grid_.reductions(), n_, [&](std::int64_t i) { return a[i] * b[i]; });
+}
+
+double PrimalFormulation::error(const double *x, const double *gradient) const {
+  // Under mean-gap control the mean pressure is the multiplier of the mean.
+  return bound_residual(grid_.reductions(), n_, x, gradient, 0.0, control_ == Control::mean_gap);
+}
+
+double PrimalFormulation::contact_fraction(const double *x) const {
+  const double n = static_cast<double>(n_);
+  return loops::sum(grid_.reductions(), n_,
+                    [&](std::int64_t i) { return x[i] > 0.0 ? 0.0 : 1.0; }) /
+         n;
+}
+
+bool PrimalFormulation::finish() {
+  // The pressure of the iterate, p = K u (scaled), into the state's pressure array.
+  double *g = state_.gap.data();
+  double *p = state_.pressure.data();
+  value_and_gradient(g, p);
+  if (control_ == Control::mean_gap) {
+    // The multiplier: the pressure on the free pixels is K u + pbar = 0 at the optimum, so
+    // pbar is minus the mean of K u there (K u has no mean). With no free pixel (a mean gap of
+    // 0) any pbar with p >= 0 fits; the smallest is taken.
+    const auto s = loops::sums<2>(grid_.reductions(), n_, [&](std::int64_t i, double *sum) {
+      const double free = g[i] > 0.0 ? 1.0 : 0.0;
+      sum[0] += free * p[i];
+      sum[1] += free;
+    });
+    const double pbar =
+        s[1] > 0.0 ? -s[0] / s[1]
+                   : -loops::maximum(grid_.reductions(), n_, [&](std::int64_t i) { return -p[i]; });
+    loops::for_each(n_, [&](std::int64_t i) { p[i] += pbar; });
+  }
+  // The state is the hard wall's reading of the iterate: no pressure where the gap is open
+  // (there it is rounding at the optimum), none negative; then the gap that pressure makes,
+  // so that the state is consistent and its contact set is that of the iterate.
+  const double pressure = pressure_unit_, n = static_cast<double>(n_);
+  const double mean_pressure = loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
+    const double clipped = g[i] > 0.0 ? 0.0 : (p[i] > 0.0 ? p[i] : 0.0);
+    p[i] = clipped * pressure;
+    return p[i] / n;
+  });
+  double *u = displacement_.data();
+  substrate_.forward(p, spectrum_.data());
+  Complex *s = spectrum_.data();
+  const double *c = substrate_.normalised_compliance().data();
+  loops::for_each(static_cast<std::int64_t>(spectrum_.size()),
+                  [&](std::int64_t q) { s[q] *= c[q]; });
+  substrate_.backward(spectrum_.data(), u);
+  counters_.transforms += 2;
+  // Under mean-gap control the penetration keeps the mean gap: mean u = pbar/K~(0), so
+  // delta = pbar/K~(0) - mean gap - mean(h - max h).
+  const double top = max_height_;
+  const double mean_height = loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
+    return (heights_[i] - top) / n;
+  });
+  const double delta = control_ == Control::mean_gap
+                           ? mean_pressure / substrate_.k0() - target_ * length_unit_ - mean_height
+                           : penetration_ * length_unit_;
+  const double check = loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
+    g[i] = u[i] - (heights_[i] - top) - delta;
+    return 0.0 * (p[i] + g[i]);  // NaN if anything overflowed
+  });
+  state_.penetration = delta;
+  system_.remember_reference_pressure(pressure_unit_);
+  return check == 0.0 && std::isfinite(delta);
+}
+
+}  // namespace asp

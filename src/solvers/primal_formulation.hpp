@@ -1,0 +1,69 @@
+// The primal (gap) formulation of the non-adhesive hard-wall contact (thesis section 2.2):
+// minimise the elastic energy of the displacement that the gap makes,
+//     E(g) = (a/2) u.K u,   u = g + h - max h + delta,   over g >= 0,
+// whose gradient is a times the pressure p = K u. Under penetration control delta is given
+// and K includes the q = 0 stiffness K~(0). Under mean-gap control the mean of g is fixed; the
+// q = 0 term is left out (the mean displacement does not change the energy of the q != 0
+// modes), and the mean pressure is the Lagrange multiplier of the constraint.
+//
+// Units as for the dual formulation (SceneUnits): the gradient is the pressure over P, and the
+// error is the largest residual of the optimality conditions in units of P.
+//
+// During a solve the system's gap array holds the scaled iterate; finish() turns it back into
+// the gap, and stores the pressure it makes and the penetration.
+#pragma once
+
+#include "physics/system.hpp"
+#include "solvers/control.hpp"
+#include "solvers/formulation.hpp"
+
+namespace asp {
+
+class PrimalFormulation final : public Formulation {
+ public:
+  // Checks that the scene and the target can be represented (throws Error, the state
+  // untouched), allocates the work arrays, then loads the stored gap (negative values
+  // clipped) as the starting iterate, with its mean rescaled to the target under mean-gap
+  // control (uniform if there is none).
+  PrimalFormulation(System &system, Control control, double value);
+
+  std::int64_t size() const override { return n_; }
+  Field &variable() override { return state_.gap; }
+  double value_and_gradient(const double *x, double *gradient) override;
+  void hessian_product(const double *direction, double *product) override;
+  double dot(const double *a, const double *b) const override;
+  double lower_bound() const override { return 0.0; }
+  bool constrains_mean() const override { return control_ == Control::mean_gap; }
+  double mean_target() const override { return target_; }
+  double error(const double *x, const double *gradient) const override;
+  double contact_fraction(const double *x) const override;
+  double reported_objective(const double *, const double *, double value) const override {
+    return value;
+  }
+  double energy_unit() const override { return energy_unit_; }
+  const Reductions &reductions() const override { return grid_.reductions(); }
+  bool finish() override;
+
+ private:
+  // K u (scaled) of a field, into out; the q = 0 mode only under penetration control.
+  void apply_stiffness(const double *field, double *out);
+
+  System &system_;
+  const Substrate &substrate_;
+  const Grid &grid_;
+  ContactState &state_;
+  const double *heights_;
+  double max_height_;
+  Control control_;
+  std::int64_t n_;
+  const Field &stiffness_;  // normalised: backward(stiffness * forward(u)) = K u
+
+  double pressure_unit_, length_unit_, energy_unit_;
+  double target_;       // mean gap or penetration, scaled
+  double penetration_;  // scaled, in u (0 under mean-gap control, where it does not matter)
+
+  Field displacement_;
+  Spectrum spectrum_;
+};
+
+}  // namespace asp
