@@ -65,9 +65,9 @@
  * Memory
  * ---------------------------------------------------------------------------------------------
  * A system holds 3 fields of nx*ny doubles (heights, pressure, gap): 24 bytes per pixel. A
- * solve adds the work arrays of its algorithm ("pk": 36 bytes per pixel, "bugnicourt": 60,
- * see docs/performance.md); a grid adds FFTW's plans. A request whose arrays cannot be allocated
- * returns ASP_ERR_OUT_OF_MEMORY and changes nothing.
+ * solve adds the work arrays of its algorithm ("pk": 36 bytes per pixel, "bugnicourt": 60 on
+ * the pressure, 44 on the gap; see docs/performance.md); a grid adds FFTW's plans. A request
+ * whose arrays cannot be allocated returns ASP_ERR_OUT_OF_MEMORY and changes nothing.
  *
  * ---------------------------------------------------------------------------------------------
  * Threads
@@ -334,10 +334,12 @@ typedef struct asp_solver asp_solver;
  *   "pk"          Polonsky & Keer constrained conjugate gradient on the pressure (hard wall,
  *                 no adhesion, periodic substrate). Controls: ASP_CONTROL_MEAN_PRESSURE,
  *                 ASP_CONTROL_PENETRATION.
- *   "bugnicourt"  Bugnicourt et al.'s constrained conjugate gradient (OUT-LIN, 2018), here
- *                 on the pressure (option "variable" = "pressure"; hard wall, no adhesion,
- *                 periodic substrate). Same controls. Faster than "pk" near full contact.
- *                 Stops as stalled also when it has no descent direction left. */
+ *   "bugnicourt"  Bugnicourt et al.'s constrained conjugate gradient (OUT-LIN, 2018; hard
+ *                 wall, no adhesion, periodic substrate), on the pressure (option
+ *                 "variable" = "pressure", the default; controls as "pk") or on the gap
+ *                 ("gap"; controls ASP_CONTROL_MEAN_GAP, ASP_CONTROL_PENETRATION). Faster
+ *                 than "pk" near full contact. Stops as stalled also when it has no descent
+ *                 direction left. */
 ASP_EXPORT int asp_solver_create(const char *algorithm, asp_solver **out);
 ASP_EXPORT void asp_solver_destroy(asp_solver *solver);
 
@@ -391,14 +393,20 @@ ASP_EXPORT int asp_solver_set_history(asp_solver *solver, int on);
  *   ASP_CONTROL_MEAN_PRESSURE  value = mean pressure (>= 0 for non-adhesive solvers);
  *                              the penetration is an unknown and is reported.
  *   ASP_CONTROL_PENETRATION    value = delta; the mean pressure is reported.
- *   ASP_CONTROL_MEAN_GAP       value = mean gap (not offered by "pk": ASP_ERR_UNSUPPORTED).
- * A request the algorithm cannot serve (control, substrate, interaction) is refused with
- * ASP_ERR_UNSUPPORTED before anything changes.
+ *   ASP_CONTROL_MEAN_GAP       value = mean gap (>= 0); mean pressure and penetration are
+ *                              reported. Offered by gap-based (primal) solvers only.
+ * A request the algorithm cannot serve (control, substrate, interaction, or a control that
+ * the chosen options do not offer) is refused with ASP_ERR_UNSUPPORTED before anything
+ * changes.
  *
  * The error is the largest force-balance residual over the pixels in pressure units, divided
  * by the reference pressure; for pressure-based (dual) solvers the residual is the gap
  * violation (|g| where p > 0, max(-g, 0) where p = 0) times the stiffness of one pixel,
- * mean over q of K~(q).
+ * mean over q of K~(q); for gap-based (primal) solvers it is the pressure of the iterate's
+ * displacement (|p| where g > 0, max(-p, 0) where g = 0), under mean-gap control relative
+ * to the mean pressure, the constraint's multiplier. A primal solve stores the hard wall's
+ * reading of its iterate: no pressure where the gap is open, none negative, and the gap
+ * that pressure makes.
  *
  * Every way a solve ends returns ASP_OK with a consistent, finite state in the system (the
  * gap is the one the pressure produces); asp_solver_termination says which way it ended:
