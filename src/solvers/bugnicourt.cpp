@@ -1,5 +1,6 @@
 #include "solvers/bugnicourt.hpp"
 
+#include <array>
 #include <cstdint>
 
 #include "core/loops.hpp"
@@ -10,8 +11,19 @@
 namespace asp {
 namespace {
 
-// The passes over the unknowns that the algorithm's steps need, on the formulation's
-// unknowns; x >= lower is the bound.
+// Gradients followed from Hessian products between two evaluations: rounding grows with
+// their number, and an evaluation costs one FFT pair.
+constexpr int updates_between_evaluations = 32;
+
+// What a step did to the iterate: the factor that restored the mean (1 without a mean
+// constraint), and whether the bound cut it (then the gradient must be evaluated).
+struct Move {
+  double scale;
+  bool cut;
+};
+
+// The passes over the unknowns that the algorithm's steps need; x >= lower is the bound. The
+// unknowns are pixels (real space), whose inner product is the plain sum.
 class Steps {
  public:
   explicit Steps(Formulation &f)
@@ -19,50 +31,76 @@ class Steps {
 
   // x <- max(x + alpha d, lower), then the mean restored by a common factor (a uniform
   // iterate if nothing is left above the bound).
-  void move(double *x, const double *d, double alpha) const {
+  Move move(double *x, const double *d, double alpha) const {
     const double lower = lower_;
-    const double total = loops::sum(reductions_, n_, [&](std::int64_t i) {
+    const auto s = loops::sums<2>(reductions_, n_, [&](std::int64_t i, double *sum) {
       const double moved = x[i] + alpha * d[i];
       x[i] = moved > lower ? moved : lower;
-      return x[i];
+      sum[0] += x[i];
+      sum[1] += moved < lower ? 1.0 : 0.0;
     });
-    if (!f_.constrains_mean()) return;
+    Move m{1.0, s[1] > 0.0};
+    if (!f_.constrains_mean()) return m;
     const double target = f_.mean_target() * static_cast<double>(n_);
-    if (total > 0.0) {
-      const double factor = target / total;
+    if (s[0] > 0.0) {
+      m.scale = target / s[0];
+      const double factor = m.scale;
       loops::for_each(n_, [&](std::int64_t i) { x[i] *= factor; });
     } else {
       const double uniform = f_.mean_target();
       loops::for_each(n_, [&](std::int64_t i) { x[i] = uniform; });
+      m.cut = true;
     }
+    return m;
   }
 
-  // The gradient r made a direction of the feasible set, in place: its mean over the free
+  // The gradient g made a direction of the feasible set, into r: its mean over the free
   // unknowns removed (the multiplier of the mean constraint), zero where x sits on the bound
-  // and r pushes it out of the feasible set, and its mean over the entries left removed again
-  // so that a step along it keeps the mean.
-  void project(const double *x, double *r) const {
+  // and g pushes it out of the feasible set, and its mean over the entries left removed again
+  // so that a step along it keeps the mean. Then the new direction d <- -r + beta d (0 where
+  // the bound rule zeroed r), with beta = r.h / curvature (h = H d_old), or 0 for the first
+  // or a restarted direction (curvature 0). Three passes: the second also sums what beta
+  // needs, so that the last writes r and d together.
+  void project_and_direct(const double *x, const double *g, const double *h, double curvature,
+                          double *r, double *d) const {
     const double lower = lower_;
     const bool mean = f_.constrains_mean();
+    double shift = 0.0;
     if (mean) {
       const auto s = loops::sums<2>(reductions_, n_, [&](std::int64_t i, double *sum) {
         const double free = x[i] > lower ? 1.0 : 0.0;
-        sum[0] += free * r[i];
+        sum[0] += free * g[i];
         sum[1] += free;
       });
-      const double shift = s[1] > 0.0 ? s[0] / s[1] : 0.0;
-      loops::for_each(n_, [&](std::int64_t i) { r[i] -= shift; });
+      shift = s[1] > 0.0 ? s[0] / s[1] : 0.0;
     }
-    const auto s = loops::sums<2>(reductions_, n_, [&](std::int64_t i, double *sum) {
-      const bool blocked = (x[i] <= lower) & (r[i] > 0.0);
-      r[i] = blocked ? 0.0 : r[i];
+    const bool conjugate = curvature > 0.0;
+    const auto s = loops::sums<4>(reductions_, n_, [&](std::int64_t i, double *sum) {
+      const double ri = g[i] - shift;
+      const bool blocked = (x[i] <= lower) & (ri > 0.0);
+      r[i] = blocked ? 0.0 : ri;
+      const double nonzero = r[i] != 0.0 ? 1.0 : 0.0;
       sum[0] += r[i];
-      sum[1] += r[i] != 0.0 ? 1.0 : 0.0;
+      sum[1] += nonzero;
+      sum[2] += conjugate ? r[i] * h[i] : 0.0;
+      sum[3] += conjugate ? nonzero * h[i] : 0.0;
     });
-    if (mean && s[1] > 0.0) {
-      const double shift = s[0] / s[1];
-      loops::for_each(n_, [&](std::int64_t i) { r[i] -= r[i] != 0.0 ? shift : 0.0; });
-    }
+    const double again = mean && s[1] > 0.0 ? s[0] / s[1] : 0.0;
+    const double beta = conjugate ? (s[2] - again * s[3]) / curvature : 0.0;
+    loops::for_each(n_, [&](std::int64_t i) {
+      const bool zero = r[i] == 0.0;
+      r[i] = zero ? 0.0 : r[i] - again;
+      d[i] = (x[i] <= lower) & zero ? 0.0 : -r[i] + beta * d[i];
+    });
+  }
+
+  // r.d and d.h in one pass: the descent along d and its curvature.
+  std::array<double, 2> descent_and_curvature(const double *r, const double *d,
+                                              const double *h) const {
+    return loops::sums<2>(reductions_, n_, [&](std::int64_t i, double *sum) {
+      sum[0] += r[i] * d[i];
+      sum[1] += d[i] * h[i];
+    });
   }
 
   // d <- -r + beta d where r is not zero by the bound rule, 0 there.
@@ -74,6 +112,13 @@ class Steps {
     });
   }
 
+  // g <- s (g + alpha h) + (1 - s) c: the gradient after a step the bound did not cut.
+  void follow(double *g, const double *h, const double *c, double alpha, double scale) const {
+    loops::for_each(n_, [&](std::int64_t i) {
+      g[i] = scale * (g[i] + alpha * h[i]) + (1.0 - scale) * c[i];
+    });
+  }
+
  private:
   Formulation &f_;
   std::int64_t n_;
@@ -81,13 +126,12 @@ class Steps {
   const Reductions &reductions_;
 };
 
-// The state the monitor sees at x with the raw gradient (before projection).
-IterationState observe(const Formulation &f, const double *x, const double *gradient,
-                       double value, const Monitor &monitor) {
+// The state the monitor sees at x with the gradient g (before projection) and the value.
+IterationState observe(const Formulation &f, const double *x, const double *g, double value,
+                       const Monitor &monitor) {
   IterationState state;
-  state.error = f.error(x, gradient);
-  state.objective =
-      monitor.wants_objective() ? f.reported_objective(x, gradient, value) * f.energy_unit() : 0.0;
+  state.error = f.error(x, g);
+  state.objective = monitor.wants_objective() ? f.reported_objective(x, g, value) * f.energy_unit() : 0.0;
   state.contact_fraction = monitor.wants_objective() ? f.contact_fraction(x) : 0.0;
   state.evaluations = f.counters().evaluations;
   state.transforms = f.counters().transforms;
@@ -95,43 +139,62 @@ IterationState observe(const Formulation &f, const double *x, const double *grad
 }
 
 // Alg. 4: exact step along d (the objective is quadratic), projection onto the bound, the
-// mean restored, then the conjugate direction with beta = r.Hd / d.Hd.
+// mean restored, then the conjugate direction with beta = r.Hd / d.Hd. The gradient g of a
+// step the bound did not cut follows from the Hessian product already made for the step
+// length; it is evaluated after a cut, every few steps, and before convergence is declared.
 void bugnicourt(Formulation &f, Monitor &monitor) {
   const Steps steps(f);
-  const std::int64_t n = f.size();
-  Field &variable = f.variable();
-  double *x = variable.data();
-  Field r(static_cast<std::size_t>(n)), d(static_cast<std::size_t>(n)),
-      h(static_cast<std::size_t>(n));
+  const auto n = static_cast<std::size_t>(f.size());
+  double *x = f.variable().data();
+  Field g(n), c(n), r(n), d(n), h(n);
+  const double value_at_zero = f.gradient_at_zero(c.data());
+  // f(x) = x.(g + c)/2 + f(0) for the history, without an evaluation.
+  const auto value_of = [&]() {
+    return monitor.wants_objective()
+               ? 0.5 * (f.dot(x, g.data()) + f.dot(x, c.data())) + value_at_zero
+               : 0.0;
+  };
 
-  double value = f.value_and_gradient(x, r.data());
-  if (monitor.should_stop(0, observe(f, x, r.data(), value, monitor))) return;
-  steps.project(x, r.data());
-  steps.new_direction(x, r.data(), 0.0, d.data());
+  double value = f.value_and_gradient(x, g.data());
+  if (monitor.should_stop(0, observe(f, x, g.data(), value, monitor))) return;
+  steps.project_and_direct(x, g.data(), h.data(), 0.0, r.data(), d.data());
 
+  int followed = 0;
   for (std::int64_t iteration = 1;; ++iteration) {
     f.hessian_product(d.data(), h.data());
-    double curvature = f.dot(d.data(), h.data());
-    double descent = f.dot(r.data(), d.data());
-    if (!(descent < 0.0 && curvature > 0.0)) {
+    std::array<double, 2> along = steps.descent_and_curvature(r.data(), d.data(), h.data());
+    if (!(along[0] < 0.0 && along[1] > 0.0)) {
       // Not a descent direction after the projection changed the free set: restart from
       // the projected steepest descent, which is one unless the iterate is stationary.
       steps.new_direction(x, r.data(), 0.0, d.data());
       f.hessian_product(d.data(), h.data());
-      curvature = f.dot(d.data(), h.data());
-      descent = f.dot(r.data(), d.data());
-      if (!(curvature > 0.0)) {
+      along = steps.descent_and_curvature(r.data(), d.data(), h.data());
+      if (!(along[1] > 0.0)) {
         monitor.declare_stalled();
         return;
       }
     }
-    steps.move(x, d.data(), -descent / curvature);
+    const double descent = along[0], curvature = along[1];
+    const double alpha = -descent / curvature;
+    const Move move = steps.move(x, d.data(), alpha);
 
-    value = f.value_and_gradient(x, r.data());
-    if (monitor.should_stop(iteration, observe(f, x, r.data(), value, monitor))) return;
-    steps.project(x, r.data());
-    const double beta = f.dot(r.data(), h.data()) / curvature;
-    steps.new_direction(x, r.data(), beta, d.data());
+    IterationState state;
+    if (!move.cut && followed < updates_between_evaluations) {
+      steps.follow(g.data(), h.data(), c.data(), alpha, move.scale);
+      ++followed;
+      value = value_of();
+      state = observe(f, x, g.data(), value, monitor);
+    }
+    if (followed == 0 || move.cut || followed >= updates_between_evaluations ||
+        !(state.error > monitor.tolerance())) {
+      // Evaluated: after a cut, when the followed gradient is due for a refresh, and before
+      // the monitor may call the iterate converged (or see a non-finite error).
+      value = f.value_and_gradient(x, g.data());
+      followed = 0;
+      state = observe(f, x, g.data(), value, monitor);
+    }
+    if (monitor.should_stop(iteration, state)) return;
+    steps.project_and_direct(x, g.data(), h.data(), curvature, r.data(), d.data());
   }
 }
 

@@ -136,6 +136,13 @@ double DualFormulation::value_and_gradient(const double *x, double *gradient) {
   });
 }
 
+double DualFormulation::gradient_at_zero(double *out) {
+  // g(0) = -(h - max h) - delta, scaled; Pi(0) = 0.
+  const double delta = delta_;
+  loops::for_each(n_, [&](std::int64_t i) { out[i] = -scaled_height(i) - delta; });
+  return 0.0;
+}
+
 void DualFormulation::hessian_product(const double *direction, double *product) {
   linear_update_ready_ = false;  // the direction's spectrum is overwritten, as in gap_of
   substrate_.forward(direction, spectrum_.data());

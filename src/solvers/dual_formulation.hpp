@@ -36,6 +36,7 @@ class DualFormulation final : public Formulation {
   Field &variable() override;
   double value_and_gradient(const double *x, double *gradient) override;
   void hessian_product(const double *direction, double *product) override;
+  double gradient_at_zero(double *out) override;
   double dot(const double *a, const double *b) const override;
   double lower_bound() const override { return 0.0; }
   bool constrains_mean() const override { return control_ == Control::mean_pressure; }

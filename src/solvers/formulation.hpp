@@ -35,6 +35,11 @@ class Formulation {
   virtual double value_and_gradient(const double *x, double *gradient) = 0;
   // The Hessian times a direction.
   virtual void hessian_product(const double *direction, double *product) = 0;
+  // The objective is quadratic, f(x) = x.Hx/2 + c.x + f(0): writes c, the gradient at 0,
+  // into out and returns f(0). A solver that keeps c can follow the gradient along a step
+  // from Hessian products, g(s(x + a d)) = s (g(x) + a H d) + (1 - s) c, instead of
+  // evaluating it.
+  virtual double gradient_at_zero(double *out) = 0;
   // The inner product of the variable's space (weighted for packed spectra).
   virtual double dot(const double *a, const double *b) const = 0;
   // Bound constraints x >= lower_bound() on every unknown (-infinity: none).

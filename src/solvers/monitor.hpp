@@ -58,6 +58,7 @@ class Monitor {
 
   // Whether the solver should compute its objective (only the history records it).
   bool wants_objective() const { return settings_.record_history; }
+  double tolerance() const { return settings_.tolerance; }
 
   // Iteration `iteration` (0: the starting point) has reached `state`. Returns true when the
   // solve must stop now; termination() then says why.

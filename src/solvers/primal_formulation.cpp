@@ -74,6 +74,11 @@ double PrimalFormulation::value_and_gradient(const double *x, double *gradient) 
                           [&](std::int64_t i) { return u[i] * gradient[i]; });
 }
 
+double PrimalFormulation::gradient_at_zero(double *out) {
+  const Field zero = grid_.make_field();
+  return value_and_gradient(zero.data(), out);
+}
+
 void PrimalFormulation::hessian_product(const double *direction, double *product) {
   apply_stiffness(direction, product);
 }

@@ -31,6 +31,7 @@ class PrimalFormulation final : public Formulation {
   Field &variable() override { return state_.gap; }
   double value_and_gradient(const double *x, double *gradient) override;
   void hessian_product(const double *direction, double *product) override;
+  double gradient_at_zero(double *out) override;
   double dot(const double *a, const double *b) const override;
   double lower_bound() const override { return 0.0; }
   bool constrains_mean() const override { return control_ == Control::mean_gap; }
