@@ -213,6 +213,33 @@ TEST_P(AgreesWithPolonskyKeer, OnTheGapToo) {
   EXPECT_EQ(primal.contact_fraction(), pk.contact_fraction());
 }
 
+// After steps the bound did not cut, the gradient follows from the Hessian product: fewer
+// than two pairs of transforms per iteration on a rough scene (four if every gradient were
+// evaluated), and still the same converged state (the agreement tests above).
+TEST(Bugnicourt, FollowsTheGradientBetweenEvaluations) {
+  auto grid = asp_test::grid_2d(64, 64, 1.0, 1.0);
+  const auto h = asp_test::rough_surface(*grid, 5, 0.1);
+  for (const char *variable : {"pressure", "gap"}) {
+    asp::System system(grid, 1.0);
+    system.set_topography(h.data());
+    asp::Solver solver("bugnicourt");
+    solver.set_option("variable", std::string(variable));
+    solver.set_history(true);
+    const Control control =
+        std::string(variable) == "gap" ? Control::penetration : Control::mean_pressure;
+    solver.solve(system, control, control == Control::penetration ? 0.004 : 0.002);
+    ASSERT_TRUE(solver.report().converged()) << variable;
+    const auto &last = solver.history().back();
+    const double iterations = last[static_cast<int>(asp::HistoryColumn::iteration)];
+    const double evaluations = last[static_cast<int>(asp::HistoryColumn::evaluations)];
+    const double transforms = last[static_cast<int>(asp::HistoryColumn::transforms)];
+    std::printf("%s: %g iterations, %g evaluations, %.2f transforms per iteration\n", variable,
+                iterations, evaluations, transforms / iterations);
+    EXPECT_LT(evaluations, iterations) << variable;
+    EXPECT_LT(transforms / iterations, 3.8) << variable;
+  }
+}
+
 TEST(Bugnicourt, RefusesWhatItCannotServe) {
   asp::Solver solver("bugnicourt");
   EXPECT_THROW(solver.set_option("variable", std::string("displacement")), asp::Error);
