@@ -6,17 +6,20 @@
 
 namespace asp {
 
+double mean_over_free(const Reductions &reductions, std::int64_t n, const double *x,
+                      const double *gradient, double lower) {
+  const auto sums = loops::sums<2>(reductions, n, [&](std::int64_t i, double *s) {
+    const double free = x[i] > lower ? 1.0 : 0.0;
+    s[0] += free * gradient[i];
+    s[1] += free;
+  });
+  return sums[1] > 0.0 ? sums[0] / sums[1] : 0.0;
+}
+
 double bound_residual(const Reductions &reductions, std::int64_t n, const double *x,
                       const double *gradient, double lower, bool mean_constrained) {
-  double shift = 0.0;
-  if (mean_constrained) {
-    const auto sums = loops::sums<2>(reductions, n, [&](std::int64_t i, double *s) {
-      const double free = x[i] > lower ? 1.0 : 0.0;
-      s[0] += free * gradient[i];
-      s[1] += free;
-    });
-    shift = sums[1] > 0.0 ? sums[0] / sums[1] : 0.0;
-  }
+  const double shift =
+      mean_constrained ? mean_over_free(reductions, n, x, gradient, lower) : 0.0;
   // The residuals are also summed, only to notice NaN, which a maximum may drop.
   const auto r = loops::sums_and_max<1>(reductions, n, [&](std::int64_t i, double *sum, double &max) {
     const double g = gradient[i] - shift;

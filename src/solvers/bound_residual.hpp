@@ -11,6 +11,11 @@
 
 namespace asp {
 
+// The mean of the gradient over the free unknowns (x > lower), 0 if there is none: the
+// multiplier of a mean-value constraint, as the optimality conditions define it.
+double mean_over_free(const Reductions &reductions, std::int64_t n, const double *x,
+                      const double *gradient, double lower);
+
 // NaN in the gradient is returned as NaN, so that the monitor sees it.
 double bound_residual(const Reductions &reductions, std::int64_t n, const double *x,
                       const double *gradient, double lower, bool mean_constrained);

@@ -4,6 +4,7 @@
 #include <cstdint>
 
 #include "core/loops.hpp"
+#include "solvers/bound_residual.hpp"
 #include "solvers/dual_formulation.hpp"
 #include "solvers/primal_formulation.hpp"
 #include "solvers/solver.hpp"
@@ -65,15 +66,7 @@ class Steps {
                           double *r, double *d) const {
     const double lower = lower_;
     const bool mean = f_.constrains_mean();
-    double shift = 0.0;
-    if (mean) {
-      const auto s = loops::sums<2>(reductions_, n_, [&](std::int64_t i, double *sum) {
-        const double free = x[i] > lower ? 1.0 : 0.0;
-        sum[0] += free * g[i];
-        sum[1] += free;
-      });
-      shift = s[1] > 0.0 ? s[0] / s[1] : 0.0;
-    }
+    const double shift = mean ? mean_over_free(reductions_, n_, x, g, lower) : 0.0;
     const bool conjugate = curvature > 0.0;
     const auto s = loops::sums<4>(reductions_, n_, [&](std::int64_t i, double *sum) {
       const double ri = g[i] - shift;

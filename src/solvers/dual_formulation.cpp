@@ -6,7 +6,6 @@
 
 #include "core/loops.hpp"
 #include "solvers/bound_residual.hpp"
-#include "solvers/scene_units.hpp"
 
 namespace asp {
 
@@ -17,20 +16,8 @@ constexpr int linear_updates_between_transforms = 32;
 }  // namespace
 
 DualFormulation::DualFormulation(System &system, Control control, double value)
-    : system_(system),
-      substrate_(system.substrate()),
-      grid_(system.grid()),
-      state_(system.state()),
-      heights_(system.heights().data()),
-      max_height_(system.max_height()),
-      control_(control),
-      n_(system.grid().n_pixels()),
+    : ScaledFormulation(system, control, value),
       compliance_(system.substrate().normalised_compliance()) {
-  const SceneUnits units = scene_units(system, control, value);
-  pressure_unit_ = units.pressure;
-  length_unit_ = units.length;
-  energy_unit_ = units.energy;
-  target_ = units.target;
   compliance_factor_ = substrate_.pixel_stiffness();
   const double n = static_cast<double>(n_);
 
@@ -152,10 +139,6 @@ void DualFormulation::hessian_product(const double *direction, double *product) 
                   [&](std::int64_t k) { s[k] *= compliance_factor_ * c[k]; });
   substrate_.backward(spectrum_.data(), product);
   counters_.transforms += 2;
-}
-
-double DualFormulation::dot(const double *a, const double *b) const {
-  return loops::sum(grid_.reductions(), n_, [&](std::int64_t i) { return a[i] * b[i]; });
 }
 
 double DualFormulation::error(const double *x, const double *gradient) const {

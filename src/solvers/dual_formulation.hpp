@@ -18,11 +18,11 @@
 
 #include "physics/system.hpp"
 #include "solvers/control.hpp"
-#include "solvers/formulation.hpp"
+#include "solvers/scaled_formulation.hpp"
 
 namespace asp {
 
-class DualFormulation final : public Formulation {
+class DualFormulation final : public ScaledFormulation {
  public:
   // Checks that the scene and the target can be represented (throws Error naming the
   // argument, the state untouched), allocates the work arrays, then loads the system's state
@@ -32,12 +32,10 @@ class DualFormulation final : public Formulation {
   DualFormulation(System &system, Control control, double value);
 
   // ---- Formulation
-  std::int64_t size() const override { return n_; }
   Field &variable() override;
   double value_and_gradient(const double *x, double *gradient) override;
   void hessian_product(const double *direction, double *product) override;
   double gradient_at_zero(double *out) override;
-  double dot(const double *a, const double *b) const override;
   double lower_bound() const override { return 0.0; }
   bool constrains_mean() const override { return control_ == Control::mean_pressure; }
   double mean_target() const override { return target_; }
@@ -46,9 +44,6 @@ class DualFormulation final : public Formulation {
   double contact_fraction(const double *x) const override;
   double reported_objective(const double *x, const double *gradient,
                             double value) const override;
-  // Converts scaled objective values to the physical energy (per unit length in 1D).
-  double energy_unit() const override { return energy_unit_; }
-  const Reductions &reductions() const override { return grid_.reductions(); }
 
   // ---- Polonsky & Keer's steps (the constructor has loaded the starting iterate)
 
@@ -87,19 +82,6 @@ class DualFormulation final : public Formulation {
   double gap_of_iterate(double *gap, bool with_energy);
   void load_state();
 
-  System &system_;
-  const Substrate &substrate_;
-  const Grid &grid_;
-  ContactState &state_;
-  const double *heights_;
-  double max_height_;
-  Control control_;
-  std::int64_t n_;
-
-  double pressure_unit_;  // P
-  double length_unit_;    // P/k
-  double energy_unit_;    // a P^2/k
-  double target_;         // scaled mean pressure or penetration
   double compliance_factor_;  // k: turns the substrate's K^-1 into the scaled one
 
   Field direction_;         // t

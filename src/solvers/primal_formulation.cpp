@@ -4,25 +4,12 @@
 
 #include "core/loops.hpp"
 #include "solvers/bound_residual.hpp"
-#include "solvers/scene_units.hpp"
 
 namespace asp {
 
 PrimalFormulation::PrimalFormulation(System &system, Control control, double value)
-    : system_(system),
-      substrate_(system.substrate()),
-      grid_(system.grid()),
-      state_(system.state()),
-      heights_(system.heights().data()),
-      max_height_(system.max_height()),
-      control_(control),
-      n_(system.grid().n_pixels()),
+    : ScaledFormulation(system, control, value),
       stiffness_(system.substrate().normalised_stiffness()) {
-  const SceneUnits units = scene_units(system, control, value);
-  pressure_unit_ = units.pressure;
-  length_unit_ = units.length;
-  energy_unit_ = units.energy;
-  target_ = units.target;
   penetration_ = control == Control::penetration ? target_ : 0.0;
 
   // Work arrays before anything changes, so that running out of memory changes nothing.
@@ -81,10 +68,6 @@ double PrimalFormulation::gradient_at_zero(double *out) {
 
 void PrimalFormulation::hessian_product(const double *direction, double *product) {
   apply_stiffness(direction, product);
-}
-
-double PrimalFormulation::dot(const double *a, const double *b) const {
-  return loops::sum(grid_.reductions(), n_, [&](std::int64_t i) { return a[i] * b[i]; });
 }
 
 double PrimalFormulation::error(const double *x, const double *gradient) const {

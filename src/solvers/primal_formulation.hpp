@@ -15,11 +15,11 @@
 
 #include "physics/system.hpp"
 #include "solvers/control.hpp"
-#include "solvers/formulation.hpp"
+#include "solvers/scaled_formulation.hpp"
 
 namespace asp {
 
-class PrimalFormulation final : public Formulation {
+class PrimalFormulation final : public ScaledFormulation {
  public:
   // Checks that the scene and the target can be represented (throws Error, the state
   // untouched), allocates the work arrays, then loads the stored gap (negative values
@@ -27,12 +27,10 @@ class PrimalFormulation final : public Formulation {
   // control (uniform if there is none).
   PrimalFormulation(System &system, Control control, double value);
 
-  std::int64_t size() const override { return n_; }
   Field &variable() override { return state_.gap; }
   double value_and_gradient(const double *x, double *gradient) override;
   void hessian_product(const double *direction, double *product) override;
   double gradient_at_zero(double *out) override;
-  double dot(const double *a, const double *b) const override;
   double lower_bound() const override { return 0.0; }
   bool constrains_mean() const override { return control_ == Control::mean_gap; }
   double mean_target() const override { return target_; }
@@ -41,26 +39,13 @@ class PrimalFormulation final : public Formulation {
   double reported_objective(const double *, const double *, double value) const override {
     return value;
   }
-  double energy_unit() const override { return energy_unit_; }
-  const Reductions &reductions() const override { return grid_.reductions(); }
   bool finish() override;
 
  private:
   // K u (scaled) of a field, into out; the q = 0 mode only under penetration control.
   void apply_stiffness(const double *field, double *out);
 
-  System &system_;
-  const Substrate &substrate_;
-  const Grid &grid_;
-  ContactState &state_;
-  const double *heights_;
-  double max_height_;
-  Control control_;
-  std::int64_t n_;
   const Field &stiffness_;  // normalised: backward(stiffness * forward(u)) = K u
-
-  double pressure_unit_, length_unit_, energy_unit_;
-  double target_;       // mean gap or penetration, scaled
   double penetration_;  // scaled, in u (0 under mean-gap control, where it does not matter)
 
   Field displacement_;

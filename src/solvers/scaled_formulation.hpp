@@ -1,0 +1,58 @@
+// What every formulation of a system holds: the system's parts it reads, the control, and the
+// dimensionless units of the solve (SceneUnits), with the parts of the Formulation interface
+// that do not depend on the unknown (size, plain inner product over pixels, energy unit,
+// reductions).
+#pragma once
+
+#include "core/loops.hpp"
+#include "physics/system.hpp"
+#include "solvers/control.hpp"
+#include "solvers/formulation.hpp"
+#include "solvers/scene_units.hpp"
+
+namespace asp {
+
+class ScaledFormulation : public Formulation {
+ public:
+  std::int64_t size() const override { return n_; }
+  double dot(const double *a, const double *b) const override {
+    return loops::sum(grid_.reductions(), n_, [&](std::int64_t i) { return a[i] * b[i]; });
+  }
+  // Converts scaled objective values to the physical energy (per unit length in 1D).
+  double energy_unit() const override { return energy_unit_; }
+  const Reductions &reductions() const override { return grid_.reductions(); }
+
+ protected:
+  // Throws Error when the solve cannot be represented (scene_units); touches nothing.
+  ScaledFormulation(System &system, Control control, double value)
+      : system_(system),
+        substrate_(system.substrate()),
+        grid_(system.grid()),
+        state_(system.state()),
+        heights_(system.heights().data()),
+        max_height_(system.max_height()),
+        control_(control),
+        n_(system.grid().n_pixels()) {
+    const SceneUnits units = scene_units(system, control, value);
+    pressure_unit_ = units.pressure;
+    length_unit_ = units.length;
+    energy_unit_ = units.energy;
+    target_ = units.target;
+  }
+
+  System &system_;
+  const Substrate &substrate_;
+  const Grid &grid_;
+  ContactState &state_;
+  const double *heights_;
+  double max_height_;
+  Control control_;
+  std::int64_t n_;
+
+  double pressure_unit_;  // P
+  double length_unit_;    // P/k
+  double energy_unit_;    // a P^2/k
+  double target_;         // the control's value, scaled
+};
+
+}  // namespace asp
