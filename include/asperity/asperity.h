@@ -65,8 +65,8 @@
  * Memory
  * ---------------------------------------------------------------------------------------------
  * A system holds 3 fields of nx*ny doubles (heights, pressure, gap): 24 bytes per pixel. A
- * solve adds the work arrays of its algorithm ("pk": 36 bytes per pixel, "bugnicourt": 76 on
- * the pressure, 60 on the gap; see docs/performance.md); a grid adds FFTW's plans. A request
+ * solve adds the work arrays of its algorithm ("pk": 36 bytes per pixel, "bugnicourt": 60 on
+ * the pressure and on the gap; see docs/performance.md); a grid adds FFTW's plans. A request
  * whose arrays cannot be allocated returns ASP_ERR_OUT_OF_MEMORY and changes nothing.
  *
  * ---------------------------------------------------------------------------------------------

@@ -67,13 +67,15 @@ double System::mean_pressure() const {
   const double *p = state_.pressure.data();
   // Each term divided by N first: the sum of finite pressures cannot overflow.
   const double n = static_cast<double>(grid_->n_pixels());
-  return loops::sum(grid_->reductions(), grid_->n_pixels(), [&](std::int64_t i) { return p[i] / n; });
+  return loops::sum(grid_->reductions(), grid_->n_pixels(),
+                    [&](std::int64_t i) { return p[i] / n; });
 }
 
 double System::mean_gap() const {
   const double *g = state_.gap.data();
   const double n = static_cast<double>(grid_->n_pixels());
-  return loops::sum(grid_->reductions(), grid_->n_pixels(), [&](std::int64_t i) { return g[i] / n; });
+  return loops::sum(grid_->reductions(), grid_->n_pixels(),
+                    [&](std::int64_t i) { return g[i] / n; });
 }
 
 double System::total_force() const { return mean_pressure() * grid_->area(); }

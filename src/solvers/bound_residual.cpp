@@ -21,7 +21,8 @@ double bound_residual(const Reductions &reductions, std::int64_t n, const double
   const double shift =
       mean_constrained ? mean_over_free(reductions, n, x, gradient, lower) : 0.0;
   // The residuals are also summed, only to notice NaN, which a maximum may drop.
-  const auto r = loops::sums_and_max<1>(reductions, n, [&](std::int64_t i, double *sum, double &max) {
+  const auto r = loops::sums_and_max<1>(reductions, n, [&](std::int64_t i, double *sum,
+                                                           double &max) {
     const double g = gradient[i] - shift;
     const double v = x[i] > lower ? std::fabs(g) : (g > 0.0 ? 0.0 : -g);
     max = max > v ? max : v;

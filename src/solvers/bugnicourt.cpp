@@ -124,7 +124,8 @@ IterationState observe(const Formulation &f, const double *x, const double *g, d
                        const Monitor &monitor) {
   IterationState state;
   state.error = f.error(x, g);
-  state.objective = monitor.wants_objective() ? f.reported_objective(x, g, value) * f.energy_unit() : 0.0;
+  state.objective =
+      monitor.wants_objective() ? f.reported_objective(x, g, value) * f.energy_unit() : 0.0;
   state.contact_fraction = monitor.wants_objective() ? f.contact_fraction(x) : 0.0;
   state.evaluations = f.counters().evaluations;
   state.transforms = f.counters().transforms;
@@ -148,7 +149,7 @@ void bugnicourt(Formulation &f, Monitor &monitor) {
                : 0.0;
   };
 
-  double value = f.value_and_gradient(x, g.data());
+  const double value = f.value_and_gradient(x, g.data());
   if (monitor.should_stop(0, observe(f, x, g.data(), value, monitor))) return;
   steps.project_and_direct(x, g.data(), h.data(), 0.0, r.data(), d.data());
 
@@ -171,20 +172,18 @@ void bugnicourt(Formulation &f, Monitor &monitor) {
     const double alpha = -descent / curvature;
     const Move move = steps.move(x, d.data(), alpha);
 
+    // The gradient is evaluated after a cut, when the followed one is due for a refresh, and
+    // before the monitor may call the iterate converged (or see a non-finite error).
     IterationState state;
-    if (!move.cut && followed < updates_between_evaluations) {
+    const bool follow = !move.cut && followed < updates_between_evaluations;
+    if (follow) {
       steps.follow(g.data(), h.data(), c.data(), alpha, move.scale);
       ++followed;
-      value = value_of();
-      state = observe(f, x, g.data(), value, monitor);
+      state = observe(f, x, g.data(), value_of(), monitor);
     }
-    if (followed == 0 || move.cut || followed >= updates_between_evaluations ||
-        !(state.error > monitor.tolerance())) {
-      // Evaluated: after a cut, when the followed gradient is due for a refresh, and before
-      // the monitor may call the iterate converged (or see a non-finite error).
-      value = f.value_and_gradient(x, g.data());
+    if (!follow || !(state.error > monitor.tolerance())) {
       followed = 0;
-      state = observe(f, x, g.data(), value, monitor);
+      state = observe(f, x, g.data(), f.value_and_gradient(x, g.data()), monitor);
     }
     if (monitor.should_stop(iteration, state)) return;
     steps.project_and_direct(x, g.data(), h.data(), curvature, r.data(), d.data());

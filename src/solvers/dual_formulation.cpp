@@ -15,22 +15,25 @@ namespace {
 constexpr int linear_updates_between_transforms = 32;
 }  // namespace
 
-DualFormulation::DualFormulation(System &system, Control control, double value)
+DualFormulation::DualFormulation(System &system, Control control, double value,
+                                 DualSteps steps)
     : ScaledFormulation(system, control, value),
       compliance_(system.substrate().normalised_compliance()) {
   compliance_factor_ = substrate_.pixel_stiffness();
   const double n = static_cast<double>(n_);
 
   // Work arrays before anything changes, so that running out of memory changes nothing.
-  direction_ = grid_.make_field();
   spectrum_ = substrate_.make_spectrum();
-  pressure_spectrum_ = substrate_.make_spectrum();
   height_spectrum_ = substrate_.make_spectrum();
-  // The direction's array holds the scaled heights for their transform, then starts at 0.
-  double *w = direction_.data();
+  if (steps == DualSteps::polonsky_keer) {
+    direction_ = grid_.make_field();
+    pressure_spectrum_ = substrate_.make_spectrum();
+  }
+  // The gap array holds the scaled heights for their transform; every way out of a solve
+  // computes the gap again (evaluate_gap, finish).
+  double *w = state_.gap.data();
   loops::for_each(n_, [&](std::int64_t i) { w[i] = scaled_height(i) / n; });
   substrate_.forward(w, height_spectrum_.data());
-  loops::for_each(n_, [&](std::int64_t i) { w[i] = 0.0; });
   counters_.transforms += 1;
   load_state();
 }
@@ -60,8 +63,10 @@ double DualFormulation::gap_of_iterate(double *gap, bool with_energy) {
   // contact set, p_new = scale_old p_old - tau t exactly, so its spectrum follows from the
   // old one and that of t (still in spectrum_ from the curvature) without a transform. Every
   // few such steps it is recomputed, so that rounding cannot accumulate.
-  Complex *ps = pressure_spectrum_.data();
+  // Without Polonsky & Keer's arrays (generic use) the pressure is transformed into the work
+  // spectrum itself, and the gap's spectrum overwrites it in place.
   Complex *s = spectrum_.data();
+  Complex *ps = pressure_spectrum_.empty() ? s : pressure_spectrum_.data();
   const Complex *hs = height_spectrum_.data();
   const double *c = compliance_.data();
   const double factor = scale_ * compliance_factor_;
@@ -88,6 +93,13 @@ double DualFormulation::gap_of_iterate(double *gap, bool with_energy) {
   };
   double pressure_dot_displacement = 0.0;
   if (with_energy) {
+    // The single-weight entries of P: read before the pass when P was just transformed (the
+    // pass may overwrite it in place), after it when the pass updates P.
+    const auto singles_of_p = [&]() {
+      return substrate_.layout().single_entries_sum(
+          [&](std::int64_t k) { return c[k] * std::norm(ps[k]); });
+    };
+    double singles = linear ? 0.0 : singles_of_p();
     const Reductions &reductions = grid_.reductions();
     const double all =
         linear ? loops::sums<1>(reductions, m,
@@ -97,8 +109,7 @@ double DualFormulation::gap_of_iterate(double *gap, bool with_energy) {
                : loops::sums<1>(reductions, m, [&](std::int64_t k, double *sum) {
                    sum[0] += gap_entry(k, ps[k]);
                  })[0];
-    double singles = substrate_.layout().single_entries_sum(
-        [&](std::int64_t k) { return c[k] * std::norm(ps[k]); });
+    if (linear) singles = singles_of_p();
     reductions.combine_sums(&singles, 1);
     pressure_dot_displacement = factor * (2.0 * all - singles);
   } else if (linear) {
@@ -149,7 +160,9 @@ double DualFormulation::error(const double *x, const double *gradient) const {
 
 double DualFormulation::contact_fraction(const double *x) const {
   const double n = static_cast<double>(n_);
-  return loops::sum(grid_.reductions(), n_, [&](std::int64_t i) { return x[i] > 0.0 ? 1.0 : 0.0; }) / n;
+  const double contacts =
+      loops::sum(grid_.reductions(), n_, [&](std::int64_t i) { return x[i] > 0.0 ? 1.0 : 0.0; });
+  return contacts / n;
 }
 
 double DualFormulation::reported_objective(const double *x, const double *gradient,

@@ -22,6 +22,11 @@
 
 namespace asp {
 
+// Whether the formulation will run Polonsky & Keer's steps, which keep a search direction and
+// the pressure's spectrum between iterations (16 bytes per pixel a generic solver does not
+// need).
+enum class DualSteps { generic, polonsky_keer };
+
 class DualFormulation final : public ScaledFormulation {
  public:
   // Checks that the scene and the target can be represented (throws Error naming the
@@ -29,7 +34,8 @@ class DualFormulation final : public ScaledFormulation {
   // as the starting iterate, in place and in scaled units: the stored pressure (negative
   // values clipped), rescaled to the target mean under load control (uniform if there is
   // none), and the stored or given penetration. finish() writes it back in physical units.
-  DualFormulation(System &system, Control control, double value);
+  DualFormulation(System &system, Control control, double value,
+                  DualSteps steps = DualSteps::generic);
 
   // ---- Formulation
   Field &variable() override;
@@ -45,7 +51,8 @@ class DualFormulation final : public ScaledFormulation {
   double reported_objective(const double *x, const double *gradient,
                             double value) const override;
 
-  // ---- Polonsky & Keer's steps (the constructor has loaded the starting iterate)
+  // ---- Polonsky & Keer's steps (the constructor has loaded the starting iterate; all but
+  // evaluate_gap need DualSteps::polonsky_keer)
 
   struct Gap {
     double norm;       // sum over the contact set of (g - mean)^2 (load) or g^2 (penetration)

@@ -44,7 +44,7 @@ void polonsky_keer(DualFormulation &f, Monitor &monitor) {
 }
 
 void run(System &system, Control control, double value, const OptionValues &, Monitor &monitor) {
-  DualFormulation formulation(system, control, value);
+  DualFormulation formulation(system, control, value, DualSteps::polonsky_keer);
   polonsky_keer(formulation, monitor);
   conclude(formulation, system, monitor);
 }

@@ -107,28 +107,6 @@ INSTANTIATE_TEST_SUITE_P(
       return name;
     });
 
-// Hertz on a periodic grid at small contact radius, as for Polonsky-Keer (the tolerances and
-// their reasons are those of test_contact_oracles.cpp: a within 2 %, peak pressure within 1 %).
-TEST(Bugnicourt, HertzPeriodicParaboloid) {
-  const std::int64_t n = 256;
-  const double l = 1.0, radius = 1.0, modulus = 1.0, pi = asp_test::pi;
-  const double a = l / 12;
-  auto grid = asp_test::grid_2d(n, n, l, l);
-  std::vector<double> h(static_cast<std::size_t>(n * n));
-  asp::paraboloid_topography(*grid, radius, h.data());
-  asp::System system(grid, modulus);
-  system.set_topography(h.data());
-  const double force = 4 * modulus * a * a * a / (3 * radius);
-  const auto report =
-      asp_test::solve_with("bugnicourt", system, Control::mean_pressure, force / (l * l));
-  ASSERT_TRUE(report.converged());
-  const double a_measured = std::sqrt(system.contact_fraction() * l * l / pi);
-  const auto &p = system.state().pressure;
-  const double p_max = *std::max_element(p.begin(), p.end());
-  EXPECT_NEAR(a_measured / a, 1.0, 0.02);
-  EXPECT_NEAR(p_max / (2 * modulus * a / (pi * radius)), 1.0, 0.01);
-}
-
 // A warm start from the solution converges at once, and a load sweep warm-started step by
 // step converges at every step (the sweep that once stalled Polonsky-Keer).
 TEST(Bugnicourt, WarmStartsConverge) {
