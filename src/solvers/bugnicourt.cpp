@@ -192,10 +192,16 @@ void bugnicourt(Formulation &f, Monitor &monitor) {
 
 bool on_the_gap(const OptionValues &options) { return options.text("variable") == "gap"; }
 
-ControlsOffered controls_for(const OptionValues &options) {
+Offer offer_for(const OptionValues &options) {
   if (on_the_gap(options))
-    return {{Control::mean_gap, Control::penetration}, "variable = gap"};
-  return {{Control::mean_pressure, Control::penetration}, "variable = pressure"};
+    return {{Control::mean_gap, Control::penetration},
+            {SubstrateKind::periodic},
+            {InteractionKind::hard_wall},
+            "variable = gap"};
+  return {{Control::mean_pressure, Control::penetration},
+          {SubstrateKind::periodic},
+          {InteractionKind::hard_wall},
+          "variable = pressure"};
 }
 
 template <class Variable>
@@ -223,7 +229,7 @@ AlgorithmSpec bugnicourt_algorithm() {
       "thesis section 3.1.2, Alg. 4) on the pressure (the objective is the complementary "
       "energy, as for pk) or on the gap (the elastic energy)";
   spec.controls = {Control::mean_pressure, Control::mean_gap, Control::penetration};
-  spec.controls_for = controls_for;
+  spec.offer_for = offer_for;
   spec.substrates = {SubstrateKind::periodic};
   spec.interactions = {InteractionKind::hard_wall};
   spec.options = {{"variable", OptionType::choice, 0.0, 0.0, 0.0, false, {"pressure", "gap"},

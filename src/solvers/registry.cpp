@@ -73,27 +73,27 @@ const AlgorithmSpec &find_algorithm(const std::string &name) {
 
 void check_request(const AlgorithmSpec &algorithm, const OptionValues &options,
                    const System &system, Control control) {
-  const ControlsOffered offered = algorithm.controls_for != nullptr
-                                      ? algorithm.controls_for(options)
-                                      : ControlsOffered{algorithm.controls, ""};
-  const auto &c = offered.controls;
+  const Offer offer = algorithm.offer_for != nullptr
+                          ? algorithm.offer_for(options)
+                          : Offer{algorithm.controls, algorithm.substrates,
+                                  algorithm.interactions, ""};
+  const std::string solver =
+      "solver '" + algorithm.name + "'" +
+      (offer.condition.empty() ? "" : " with " + offer.condition);
+  const auto &c = offer.controls;
   if (std::find(c.begin(), c.end(), control) == c.end())
-    throw Error(Status::unsupported,
-                "solver '" + algorithm.name + "'" +
-                    (offered.condition.empty() ? "" : " with " + offered.condition) +
-                    " does not offer " + control_name(control) + " control (it offers: " +
-                    names(c, control_name) + ")");
-  const auto &s = algorithm.substrates;
+    throw Error(Status::unsupported, solver + " does not offer " + control_name(control) +
+                                         " control (it offers: " + names(c, control_name) + ")");
+  const auto &s = offer.substrates;
   if (std::find(s.begin(), s.end(), system.substrate().kind()) == s.end())
-    throw Error(Status::unsupported, "solver '" + algorithm.name + "' does not work on a " +
+    throw Error(Status::unsupported, solver + " does not work on a " +
                                          substrate_name(system.substrate().kind()) +
                                          " (it works on: " + names(s, substrate_name) + ")");
-  const auto &i = algorithm.interactions;
+  const auto &i = offer.interactions;
   if (std::find(i.begin(), i.end(), system.interaction().kind()) == i.end())
-    throw Error(Status::unsupported,
-                "solver '" + algorithm.name + "' does not handle a " +
-                    interaction_name(system.interaction().kind()) +
-                    " (it handles: " + names(i, interaction_name) + ")");
+    throw Error(Status::unsupported, solver + " does not handle a " +
+                                         interaction_name(system.interaction().kind()) +
+                                         " (it handles: " + names(i, interaction_name) + ")");
 }
 
 std::string describe(const AlgorithmSpec &algorithm) {

@@ -35,21 +35,25 @@ struct OptionValues {
   const std::string &text(const std::string &name) const { return texts.at(name); }
 };
 
-// The controls an algorithm serves with given option values, and which values those are
-// (for the refusal's message, e.g. "variable = gap").
-struct ControlsOffered {
+// What an algorithm serves with given option values, and which values those are (for the
+// refusal's message, e.g. "variable = gap").
+struct Offer {
   std::vector<Control> controls;
+  std::vector<SubstrateKind> substrates;
+  std::vector<InteractionKind> interactions;
   std::string condition;
 };
 
 struct AlgorithmSpec {
   std::string name;
   std::string summary;
-  std::vector<Control> controls;  // with any option values
-  // The controls with these option values, when they depend on them (null: `controls`).
-  ControlsOffered (*controls_for)(const OptionValues &options) = nullptr;
+  // What it serves with some option values (for describe()).
+  std::vector<Control> controls;
   std::vector<SubstrateKind> substrates;
   std::vector<InteractionKind> interactions;
+  // What it serves with these option values, when that depends on them (null: the lists
+  // above, whatever the options).
+  Offer (*offer_for)(const OptionValues &options) = nullptr;
   std::vector<OptionSpec> options;  // every option, the common ones first
   // Runs the algorithm from the system's state and leaves its result there (see conclude()).
   void (*run)(System &system, Control control, double value, const OptionValues &options,
