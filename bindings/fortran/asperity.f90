@@ -90,7 +90,8 @@ module asperity
             asp_solver_set_option_string, asp_solver_get_option, asp_solver_get_option_string, &
             asp_solver_set_tolerance, asp_solver_set_max_iterations, asp_solver_set_progress, &
             asp_solver_set_history, asp_solver_solve, asp_solver_termination, &
-            asp_solver_iterations, asp_solver_final_error, asp_solver_converged, &
+            asp_solver_iterations, asp_solver_evaluations, asp_solver_transforms, &
+            asp_solver_final_error, asp_solver_converged, &
             asp_solver_elapsed_seconds, asp_solver_history_length, asp_solver_get_history
   public :: asp_progress_fn
   ! Helpers (see the top of this file)
@@ -419,6 +420,18 @@ module asperity
       type(c_ptr), value :: solver
       integer(c_int64_t), intent(out) :: iterations
       integer(c_int) :: asp_solver_iterations
+    end function
+    function asp_solver_evaluations(solver, evaluations) bind(c, name='asp_solver_evaluations')
+      import :: c_int, c_int64_t, c_ptr
+      type(c_ptr), value :: solver
+      integer(c_int64_t), intent(out) :: evaluations
+      integer(c_int) :: asp_solver_evaluations
+    end function
+    function asp_solver_transforms(solver, transforms) bind(c, name='asp_solver_transforms')
+      import :: c_int, c_int64_t, c_ptr
+      type(c_ptr), value :: solver
+      integer(c_int64_t), intent(out) :: transforms
+      integer(c_int) :: asp_solver_transforms
     end function
     function asp_solver_final_error(solver, error) bind(c, name='asp_solver_final_error')
       import :: c_int, c_double, c_ptr

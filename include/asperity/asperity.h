@@ -429,8 +429,11 @@ ASP_EXPORT int asp_solver_solve(asp_solver *solver, asp_system *system, int cont
 
 /* The report of the last solve (ASP_ERR_INVALID_STATE before the first solve, or after a solve
  * that returned an error: the report then describes nothing). Iterations count the steps
- * taken; the error is that of the state left in the system; elapsed seconds are wall-clock
- * time of the whole call, including the FFT planning a first solve on a grid may do. */
+ * taken; evaluations the objective or gradient evaluations and transforms the FFTs (one
+ * forward or one backward transform each) up to the last iteration, as in the history, so
+ * that solvers can be compared by their work as well as by their time; the error is that of
+ * the state left in the system; elapsed seconds are wall-clock time of the whole call,
+ * including the FFT planning a first solve on a grid may do. */
 #define ASP_TERMINATION_CONVERGED 701
 #define ASP_TERMINATION_ITERATION_LIMIT 702
 #define ASP_TERMINATION_CANCELLED 703
@@ -438,6 +441,8 @@ ASP_EXPORT int asp_solver_solve(asp_solver *solver, asp_system *system, int cont
 #define ASP_TERMINATION_BREAKDOWN 705
 ASP_EXPORT int asp_solver_termination(const asp_solver *solver, int *reason);
 ASP_EXPORT int asp_solver_iterations(const asp_solver *solver, int64_t *iterations);
+ASP_EXPORT int asp_solver_evaluations(const asp_solver *solver, int64_t *evaluations);
+ASP_EXPORT int asp_solver_transforms(const asp_solver *solver, int64_t *transforms);
 ASP_EXPORT int asp_solver_final_error(const asp_solver *solver, double *error);
 ASP_EXPORT int asp_solver_converged(const asp_solver *solver, int *converged);
 ASP_EXPORT int asp_solver_elapsed_seconds(const asp_solver *solver, double *seconds);

@@ -162,6 +162,20 @@ int asp_solver_iterations(const asp_solver *solver, int64_t *iterations) {
   });
 }
 
+int asp_solver_evaluations(const asp_solver *solver, int64_t *evaluations) {
+  return guarded("asp_solver_evaluations", [&] {
+    asp::require_not_null(evaluations, "evaluations");
+    *evaluations = report_of(solver).evaluations;
+  });
+}
+
+int asp_solver_transforms(const asp_solver *solver, int64_t *transforms) {
+  return guarded("asp_solver_transforms", [&] {
+    asp::require_not_null(transforms, "transforms");
+    *transforms = report_of(solver).transforms;
+  });
+}
+
 int asp_solver_final_error(const asp_solver *solver, double *error) {
   return guarded("asp_solver_final_error", [&] {
     asp::require_not_null(error, "error");

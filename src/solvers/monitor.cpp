@@ -24,6 +24,8 @@ double Monitor::seconds() const {
 
 bool Monitor::should_stop(std::int64_t iteration, const IterationState &state) {
   iterations_ = iteration;
+  evaluations_ = state.evaluations;
+  transforms_ = state.transforms;
   if (!std::isfinite(state.error) ||
       (settings_.record_history && !std::isfinite(state.objective))) {
     termination_ = Termination::breakdown;

@@ -71,6 +71,9 @@ class Monitor {
 
   Termination termination() const { return termination_; }
   std::int64_t iterations() const { return iterations_; }
+  // The work counters of the last iteration the solver reported.
+  std::int64_t evaluations() const { return evaluations_; }
+  std::int64_t transforms() const { return transforms_; }
   // The error of the last iteration with a finite one.
   double error() const { return error_; }
   double seconds() const;
@@ -81,6 +84,8 @@ class Monitor {
   std::chrono::steady_clock::time_point start_;
   Termination termination_ = Termination::iteration_limit;
   std::int64_t iterations_ = 0;
+  std::int64_t evaluations_ = 0;
+  std::int64_t transforms_ = 0;
   // The last finite error seen; DBL_MAX until there is one (a start that is not finite).
   double error_ = std::numeric_limits<double>::max();
   double stall_reference_ = 0.0;  // the error the next iterations must beat by 1 %

@@ -113,6 +113,8 @@ void Solver::solve(System &system, Control control, double value) {
   algorithm_.run(system, control, value, options_, monitor);
 
   report_.iterations = monitor.iterations();
+  report_.evaluations = monitor.evaluations();
+  report_.transforms = monitor.transforms();
   report_.error = monitor.error();
   report_.termination = monitor.termination();
   report_.seconds = monitor.seconds();

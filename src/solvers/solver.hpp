@@ -16,6 +16,8 @@ namespace asp {
 struct SolveReport {
   bool available = false;  // false until a solve has run (and after one that failed)
   std::int64_t iterations = 0;
+  std::int64_t evaluations = 0;  // objective or gradient evaluations
+  std::int64_t transforms = 0;   // forward or backward FFTs
   double error = 0.0;
   Termination termination = Termination::iteration_limit;
   double seconds = 0.0;

@@ -33,13 +33,17 @@ static void good_solve(void) {
 /* The report describes nothing. */
 static void check_no_report(const char *what, int line) {
   int reason = -1, converged = -1, status, ok;
-  int64_t iterations = -1, length = -1;
+  int64_t iterations = -1, length = -1, count = -1;
   double error = -1.0, seconds = -1.0, values[4096];
   printf("after a solve refused for %s\n", what);
   check_error(asp_solver_termination(solver, &reason), ASP_ERR_INVALID_STATE, NULL, __FILE__,
               line, "asp_solver_termination refused after a refused solve");
   check_error(asp_solver_iterations(solver, &iterations), ASP_ERR_INVALID_STATE, NULL, __FILE__,
               line, "asp_solver_iterations refused after a refused solve");
+  check_error(asp_solver_evaluations(solver, &count), ASP_ERR_INVALID_STATE, NULL, __FILE__,
+              line, "asp_solver_evaluations refused after a refused solve");
+  check_error(asp_solver_transforms(solver, &count), ASP_ERR_INVALID_STATE, NULL, __FILE__,
+              line, "asp_solver_transforms refused after a refused solve");
   check_error(asp_solver_final_error(solver, &error), ASP_ERR_INVALID_STATE, NULL, __FILE__,
               line, "asp_solver_final_error refused after a refused solve");
   check_error(asp_solver_converged(solver, &converged), ASP_ERR_INVALID_STATE, NULL, __FILE__,

@@ -247,11 +247,13 @@ static void check_history(const asp_solver *solver, const History *h, int line) 
   const double *iteration = h->column[0], *evaluations = h->column[1];
   const double *transforms = h->column[2], *seconds = h->column[3], *error = h->column[4];
   const double *objective = h->column[5], *fraction = h->column[6];
-  int64_t i, iterations = -1;
+  int64_t i, iterations = -1, evaluation_count = -1, transform_count = -1;
   double tolerance = 0, final_error = -1, elapsed = -1;
   int reason = 0, ok = 1;
   ok &= asp_solver_iterations(solver, &iterations) == ASP_OK;
   ok &= asp_solver_final_error(solver, &final_error) == ASP_OK;
+  ok &= asp_solver_evaluations(solver, &evaluation_count) == ASP_OK;
+  ok &= asp_solver_transforms(solver, &transform_count) == ASP_OK;
   ok &= asp_solver_termination(solver, &reason) == ASP_OK;
   ok &= asp_solver_elapsed_seconds(solver, &elapsed) == ASP_OK;
   ok &= asp_solver_get_option(solver, "tolerance", &tolerance) == ASP_OK;
@@ -284,6 +286,9 @@ static void check_history(const asp_solver *solver, const History *h, int line) 
   check_record(1, __FILE__, line, "history rows as documented");
   check_record(evaluations[h->length - 1] > 0 && transforms[h->length - 1] > 0, __FILE__, line,
                "evaluations and transforms are counted");
+  check_record(evaluations[h->length - 1] == (double)evaluation_count &&
+                   transforms[h->length - 1] == (double)transform_count,
+               __FILE__, line, "the report's work counters are the last row's");
   check_record(error[h->length - 1] == final_error, __FILE__, line,
                "the last row's error is the final error");
   check_record(seconds[h->length - 1] <= elapsed, __FILE__, line,

@@ -86,7 +86,7 @@ program test_api
   character(len=2) :: small
   character(len=256) :: large
   character(len=32) :: padded_name
-  integer(c_int64_t) :: length, rows, iterations, nx, ny, pixels, i
+  integer(c_int64_t) :: length, rows, iterations, count, nx, ny, pixels, i
   integer(c_int) :: status, reason, converged, dimension
   real(c_double) :: value, error, scalar, lx, ly
   integer :: k, unit
@@ -267,6 +267,10 @@ program test_api
   call expect_status(asp_solver_iterations(solver, iterations), ASP_OK, 'asp_solver_iterations')
   call expect(iterations >= cancel_after, 'the scene needs more iterations than the cancelled ' // &
               'solve ran, so that the cancellation meant something')
+  call expect_status(asp_solver_evaluations(solver, count), ASP_OK, 'asp_solver_evaluations')
+  call expect(count >= iterations, 'at least one evaluation per iteration of pk')
+  call expect_status(asp_solver_transforms(solver, count), ASP_OK, 'asp_solver_transforms')
+  call expect(count >= 2 * iterations, 'at least one FFT pair per iteration of pk')
   call expect_status(asp_solver_final_error(solver, error), ASP_OK, 'asp_solver_final_error')
   call expect(error <= tolerance, 'the final error meets the tolerance')
   call expect_status(asp_solver_elapsed_seconds(solver, value), ASP_OK, &
