@@ -8,12 +8,21 @@ namespace asp {
 
 double mean_over_free(const Reductions &reductions, std::int64_t n, const double *x,
                       const double *gradient, double lower) {
+  // Near the optimum the gradient is nearly the same on every free unknown (the multiplier),
+  // often far larger than its spread: summed as it is, rounding would grow with the number of
+  // terms and hide the spread. It is summed relative to one of its free values instead, the
+  // first this process holds (the largest of those over processes, so that all use one).
+  std::int64_t first = 0;
+  while (first < n && !(x[first] > lower)) ++first;
+  double pivot = first < n ? gradient[first] : -HUGE_VAL;
+  reductions.combine_maxima(&pivot, 1);
+  if (!(pivot > -HUGE_VAL)) pivot = 0.0;
   const auto sums = loops::sums<2>(reductions, n, [&](std::int64_t i, double *s) {
     const double free = x[i] > lower ? 1.0 : 0.0;
-    s[0] += free * gradient[i];
+    s[0] += free * (gradient[i] - pivot);
     s[1] += free;
   });
-  return sums[1] > 0.0 ? sums[0] / sums[1] : 0.0;
+  return sums[1] > 0.0 ? pivot + sums[0] / sums[1] : 0.0;
 }
 
 double bound_residual(const Reductions &reductions, std::int64_t n, const double *x,
