@@ -365,11 +365,11 @@ typedef struct asp_solver asp_solver;
  *                 no adhesion, periodic substrate). Controls: ASP_CONTROL_MEAN_PRESSURE,
  *                 ASP_CONTROL_PENETRATION.
  *   "bugnicourt"  Bugnicourt et al.'s constrained conjugate gradient (OUT-LIN, 2018; hard
- *                 wall, no adhesion, periodic substrate), on the pressure (option
- *                 "variable" = "pressure", the default; controls as "pk") or on the gap
- *                 ("gap"; controls ASP_CONTROL_MEAN_GAP, ASP_CONTROL_PENETRATION). Faster
- *                 than "pk" near full contact. Stops as stalled also when it has no descent
- *                 direction left. */
+ *                 wall, periodic substrate), on the pressure (option "variable" =
+ *                 "pressure", the default; controls as "pk"; no adhesion) or on the gap
+ *                 ("gap"; controls ASP_CONTROL_MEAN_GAP, ASP_CONTROL_PENETRATION; with or
+ *                 without adhesion, see asp_system_set_adhesion). Faster than "pk" near full
+ *                 contact. Stops as stalled also when it has no descent direction left. */
 ASP_EXPORT int asp_solver_create(const char *algorithm, asp_solver **out);
 ASP_EXPORT void asp_solver_destroy(asp_solver *solver);
 
@@ -434,9 +434,11 @@ ASP_EXPORT int asp_solver_set_history(asp_solver *solver, int on);
  * violation (|g| where p > 0, max(-g, 0) where p = 0) times the stiffness of one pixel,
  * mean over q of K~(q); for gap-based (primal) solvers it is the pressure of the iterate's
  * displacement (|p| where g > 0, max(-p, 0) where g = 0), under mean-gap control relative
- * to the mean pressure, the constraint's multiplier. A primal solve stores the hard wall's
- * reading of its iterate: no pressure where the gap is open, none negative, and the gap
- * that pressure makes.
+ * to the mean pressure, the constraint's multiplier; with adhesion the pressure counted is
+ * the elastic pressure less the interaction's, K u + phi'(g). A primal solve stores the hard
+ * wall's reading of its iterate: where the gap is open no pressure (with adhesion the
+ * interaction's, -phi'(g), tensile), on the wall the elastic pressure, none below 0 (with
+ * adhesion below -w/rho), and the gap that pressure makes.
  *
  * Every way a solve ends returns ASP_OK with a consistent, finite state in the system (the
  * gap is the one the pressure produces); asp_solver_termination says which way it ended:
