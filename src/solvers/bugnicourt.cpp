@@ -18,6 +18,10 @@ namespace {
 // their number, and an evaluation costs one FFT pair.
 constexpr int updates_between_evaluations = 32;
 
+// Halvings of a step of the objective that is not quadratic that still raises it; 2^-30 of
+// the step is far below what would still change the iterate.
+constexpr int max_halvings = 30;
+
 // What a step did to the iterate: the factor that restored the mean (1 without a mean
 // constraint), and whether the bound cut it (then the gradient must be evaluated).
 struct Move {
@@ -239,9 +243,18 @@ void bugnicourt_nonquadratic(Formulation &f, Monitor &monitor) {
     // A rise within 1e-12 of the values is taken for rounding, and the step kept. Where the
     // elastic and adhesive energies cancel, rounding can exceed that; a good step is then
     // replaced by the safe one, which costs an evaluation but never the descent.
-    const double slack = 1e-12 * (std::fabs(value) + std::fabs(trial));
+    const double slack = 1e-12 * std::fabs(value);
     if (newton && !(trial <= value + slack)) {
       steps.move(start.data(), x, d.data(), safe);
+      trial = f.value_and_gradient(x, g.data());
+    }
+    // The safe step descends before the bound cuts it; a cut can spoil that, but not for
+    // short steps (the cut then only drops components along which r.d >= 0). So it is
+    // halved while it raises the objective, a few times at most.
+    double alpha = safe;
+    for (int halving = 0; halving < max_halvings && !(trial <= value + slack); ++halving) {
+      alpha *= 0.5;
+      steps.move(start.data(), x, d.data(), alpha);
       trial = f.value_and_gradient(x, g.data());
     }
     value = trial;
