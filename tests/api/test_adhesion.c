@@ -66,7 +66,8 @@ int main(void) {
   CHECK_MESSAGE_HAS("'pk'");
   CHECK_OK(asp_solver_create("bugnicourt", &dual));
   CHECK_ERROR(asp_solver_solve(dual, system, ASP_CONTROL_MEAN_PRESSURE, 0.0),
-              ASP_ERR_UNSUPPORTED, "with variable = pressure does not handle an adhesive hard wall");
+              ASP_ERR_UNSUPPORTED,
+              "with variable = pressure does not handle an adhesive hard wall");
   CHECK_ERROR(asp_solver_solve(dual, system, ASP_CONTROL_PENETRATION, 0.0), ASP_ERR_UNSUPPORTED,
               "variable = pressure");
 
