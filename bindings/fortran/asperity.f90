@@ -58,7 +58,9 @@ module asperity
   ! Scalar results
   integer(c_int), parameter, public :: ASP_CONTACT_FRACTION = 301, ASP_MEAN_PRESSURE = 302, &
       ASP_MEAN_GAP = 303, ASP_ELASTIC_ENERGY = 304, ASP_PENETRATION = 305, ASP_TOTAL_FORCE = 306, &
-      ASP_K0 = 307, ASP_REFERENCE_PRESSURE = 308, ASP_MEAN_MODE_ENERGY = 309
+      ASP_K0 = 307, ASP_REFERENCE_PRESSURE = 308, ASP_MEAN_MODE_ENERGY = 309, &
+      ASP_ATTRACTIVE_FRACTION = 310, ASP_REPULSIVE_FORCE = 311, ASP_ATTRACTIVE_FORCE = 312, &
+      ASP_INTERACTION_ENERGY = 313, ASP_WORK_OF_ADHESION = 314, ASP_ADHESION_RANGE = 315
   ! Fields
   integer(c_int), parameter, public :: ASP_FIELD_PRESSURE = 401, ASP_FIELD_GAP = 402, &
       ASP_FIELD_DISPLACEMENT = 403, ASP_FIELD_TOPOGRAPHY = 404
@@ -83,8 +85,8 @@ module asperity
             asp_topography_self_affine, asp_topography_statistics, &
             asp_topography_power_spectrum
   public :: asp_system_create, asp_system_destroy, asp_system_set_topography, &
-            asp_system_set_k0, asp_system_set_reference_pressure, asp_system_reset, &
-            asp_system_get, asp_system_get_field
+            asp_system_set_k0, asp_system_set_adhesion, asp_system_set_reference_pressure, &
+            asp_system_reset, asp_system_get, asp_system_get_field
   public :: asp_algorithms
   public :: asp_solver_create, asp_solver_destroy, asp_solver_describe, asp_solver_set_option, &
             asp_solver_set_option_string, asp_solver_get_option, asp_solver_get_option_string, &
@@ -286,6 +288,13 @@ module asperity
       type(c_ptr), value :: system
       real(c_double), value :: k0
       integer(c_int) :: asp_system_set_k0
+    end function
+    function asp_system_set_adhesion(system, work_of_adhesion, range) &
+        bind(c, name='asp_system_set_adhesion')
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: system
+      real(c_double), value :: work_of_adhesion, range
+      integer(c_int) :: asp_system_set_adhesion
     end function
     function asp_system_set_reference_pressure(system, reference_pressure) &
         bind(c, name='asp_system_set_reference_pressure')

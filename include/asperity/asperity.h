@@ -280,11 +280,30 @@ ASP_EXPORT int asp_system_set_topography(asp_system *system, const double *heigh
  * equilibrium (refused if that penetration is not a finite double). */
 ASP_EXPORT int asp_system_set_k0(asp_system *system, double k0);
 
+/* The interaction: a hard wall (g >= 0) with exponential adhesion, an energy per unit area
+ *     phi(g) = -w exp(-g/rho),  g >= 0    (thesis eq. 11),
+ * w = work_of_adhesion >= 0 the work of adhesion (energy per unit area), rho = range > 0 the
+ * interaction range (a length). Where the gap is open the equilibrium pressure is
+ * -phi'(g) = -(w/rho) exp(-g/rho): tensile, w/rho the largest tensile stress. The default,
+ * and work_of_adhesion = 0, is the plain (non-adhesive) hard wall, phi = 0. The adhesion
+ * strength of a sphere of radius R is measured by the Tabor parameter
+ * (R w^2/(E*^2 rho^3))^(1/3); above about 3 it is strong, and solutions can be several
+ * (hysteresis between loading and unloading).
+ * Refused with ASP_ERR_INVALID_ARGUMENT, naming the argument: a work_of_adhesion that is
+ * negative, NaN or infinite; a range that is not > 0 and finite (also with work 0); a largest
+ * tensile stress w/rho that is not a finite, normal double. Nothing else changes: the state is
+ * kept as it is (an equilibrium of the old interaction, generally not of the new one) and
+ * the next solve starts from it; asp_system_reset starts cold. Solvers that do not handle
+ * adhesion refuse a system with it (ASP_ERR_UNSUPPORTED): with adhesion, solve with
+ * "bugnicourt" on the gap. */
+ASP_EXPORT int asp_system_set_adhesion(asp_system *system, double work_of_adhesion,
+                                       double range);
+
 /* The reference pressure that solver errors are divided by (see asp_solver_solve). Default 0:
  * use E* h'_rms/2, the rms pressure of full contact, the scale of local contact pressures at
  * any load. For a surface without slope (the flat) a solve uses its own scale instead: the
- * mean pressure, or K~(0) times the penetration (E* if that is zero too). A value > 0
- * overrides all this. */
+ * mean pressure, or K~(0) times the penetration, or with adhesion the largest tensile stress
+ * w/rho if that is larger (E* if all are zero). A value > 0 overrides all this. */
 ASP_EXPORT int asp_system_set_reference_pressure(asp_system *system, double reference_pressure);
 
 /* Forgets the state (zero pressure), so the next solve starts cold. */
@@ -292,7 +311,9 @@ ASP_EXPORT int asp_system_reset(asp_system *system);
 
 /* Scalar results of the current state, chosen by key. In 1D, energies and forces are per unit
  * length. */
-#define ASP_CONTACT_FRACTION 301   /* fraction of pixels with positive (repulsive) pressure */
+#define ASP_CONTACT_FRACTION 301   /* fraction of pixels with positive (repulsive) pressure;
+                                      with adhesion, pixels on the wall under tension near a
+                                      contact's edge do not count (see ASP_ATTRACTIVE_FRACTION) */
 #define ASP_MEAN_PRESSURE 302      /* mean of p over all pixels */
 #define ASP_MEAN_GAP 303           /* mean of g over all pixels */
 #define ASP_ELASTIC_ENERGY 304     /* (A/2) sum over q != 0 of K~(q)|u^_q|^2: the energy of the
@@ -303,6 +324,15 @@ ASP_EXPORT int asp_system_reset(asp_system *system);
 #define ASP_REFERENCE_PRESSURE 308 /* the reference pressure of the last solve */
 #define ASP_MEAN_MODE_ENERGY 309   /* the q = 0 term A pbar^2/(2 K~(0)), kept apart because it
                                       depends on K~(0); ELASTIC + MEAN_MODE = (a/2) sum p u */
+#define ASP_ATTRACTIVE_FRACTION 310 /* fraction of pixels with negative (tensile) pressure */
+#define ASP_REPULSIVE_FORCE 311    /* a times the sum of the positive pressures (a the pixel
+                                      area; 1D: the pixel length) */
+#define ASP_ATTRACTIVE_FORCE 312   /* a times the sum of the negative pressures (<= 0);
+                                      REPULSIVE + ATTRACTIVE = ASP_TOTAL_FORCE */
+#define ASP_INTERACTION_ENERGY 313 /* a sum phi(g_i): 0 for the plain hard wall, <= 0 with
+                                      adhesion */
+#define ASP_WORK_OF_ADHESION 314   /* w of asp_system_set_adhesion (0: no adhesion) */
+#define ASP_ADHESION_RANGE 315     /* rho of asp_system_set_adhesion (0: no adhesion) */
 ASP_EXPORT int asp_system_get(const asp_system *system, int key, double *value);
 
 /* Fields of the current state, copied into the caller's array of n = nx*ny doubles. */
@@ -335,11 +365,11 @@ typedef struct asp_solver asp_solver;
  *                 no adhesion, periodic substrate). Controls: ASP_CONTROL_MEAN_PRESSURE,
  *                 ASP_CONTROL_PENETRATION.
  *   "bugnicourt"  Bugnicourt et al.'s constrained conjugate gradient (OUT-LIN, 2018; hard
- *                 wall, no adhesion, periodic substrate), on the pressure (option
- *                 "variable" = "pressure", the default; controls as "pk") or on the gap
- *                 ("gap"; controls ASP_CONTROL_MEAN_GAP, ASP_CONTROL_PENETRATION). Faster
- *                 than "pk" near full contact. Stops as stalled also when it has no descent
- *                 direction left. */
+ *                 wall, periodic substrate), on the pressure (option "variable" =
+ *                 "pressure", the default; controls as "pk"; no adhesion) or on the gap
+ *                 ("gap"; controls ASP_CONTROL_MEAN_GAP, ASP_CONTROL_PENETRATION; with or
+ *                 without adhesion, see asp_system_set_adhesion). Faster than "pk" near full
+ *                 contact. Stops as stalled also when it has no descent direction left. */
 ASP_EXPORT int asp_solver_create(const char *algorithm, asp_solver **out);
 ASP_EXPORT void asp_solver_destroy(asp_solver *solver);
 
@@ -404,9 +434,11 @@ ASP_EXPORT int asp_solver_set_history(asp_solver *solver, int on);
  * violation (|g| where p > 0, max(-g, 0) where p = 0) times the stiffness of one pixel,
  * mean over q of K~(q); for gap-based (primal) solvers it is the pressure of the iterate's
  * displacement (|p| where g > 0, max(-p, 0) where g = 0), under mean-gap control relative
- * to the mean pressure, the constraint's multiplier. A primal solve stores the hard wall's
- * reading of its iterate: no pressure where the gap is open, none negative, and the gap
- * that pressure makes.
+ * to the mean pressure, the constraint's multiplier; with adhesion the pressure counted is
+ * the elastic pressure less the interaction's, K u + phi'(g). A primal solve stores the hard
+ * wall's reading of its iterate: where the gap is open no pressure (with adhesion the
+ * interaction's, -phi'(g), tensile), on the wall the elastic pressure, none below 0 (with
+ * adhesion below -w/rho), and the gap that pressure makes.
  *
  * Every way a solve ends returns ASP_OK with a consistent, finite state in the system (the
  * gap is the one the pressure produces); asp_solver_termination says which way it ended:

@@ -40,6 +40,13 @@ int asp_system_set_k0(asp_system *system, double k0) {
   });
 }
 
+int asp_system_set_adhesion(asp_system *system, double work_of_adhesion, double range) {
+  return guarded("asp_system_set_adhesion", [&] {
+    asp::require_not_null(system, "system");
+    system->system->set_adhesion(work_of_adhesion, range);
+  });
+}
+
 int asp_system_set_reference_pressure(asp_system *system, double reference_pressure) {
   return guarded("asp_system_set_reference_pressure", [&] {
     asp::require_not_null(system, "system");
@@ -61,6 +68,7 @@ int asp_system_get(const asp_system *system, int key, double *value) {
     asp::require_not_null(value, "value");
     asp::capi::require_member(key, asp::capi::Family::scalar_key, "key");
     const asp::System &s = *system->system;
+    const asp::ExponentialAdhesion *adhesion = asp::exponential_adhesion(s.interaction());
     double result = 0.0;
     switch (key) {
       case ASP_CONTACT_FRACTION: result = s.contact_fraction(); break;
@@ -72,6 +80,12 @@ int asp_system_get(const asp_system *system, int key, double *value) {
       case ASP_K0: result = s.substrate().k0(); break;
       case ASP_REFERENCE_PRESSURE: result = s.last_reference_pressure(); break;
       case ASP_MEAN_MODE_ENERGY: result = s.mean_mode_energy(); break;
+      case ASP_ATTRACTIVE_FRACTION: result = s.attractive_fraction(); break;
+      case ASP_REPULSIVE_FORCE: result = s.repulsive_force(); break;
+      case ASP_ATTRACTIVE_FORCE: result = s.attractive_force(); break;
+      case ASP_INTERACTION_ENERGY: result = s.interaction_energy(); break;
+      case ASP_WORK_OF_ADHESION: result = adhesion != nullptr ? adhesion->work() : 0.0; break;
+      case ASP_ADHESION_RANGE: result = adhesion != nullptr ? adhesion->range() : 0.0; break;
       default:
         throw asp::Error(asp::Status::internal, "scalar key without a getter");
     }

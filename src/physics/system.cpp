@@ -1,6 +1,7 @@
 #include "physics/system.hpp"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 
 #include "core/checks.hpp"
@@ -80,12 +81,52 @@ double System::mean_gap() const {
 
 double System::total_force() const { return mean_pressure() * grid_->area(); }
 
+double System::attractive_fraction() const {
+  const double *p = state_.pressure.data();
+  const double count = loops::sum(grid_->reductions(), grid_->n_pixels(),
+                                  [&](std::int64_t i) { return p[i] < 0.0 ? 1.0 : 0.0; });
+  return count / static_cast<double>(grid_->n_pixels());
+}
+
+double System::repulsive_force() const {
+  // As the mean pressure: each term divided by N first, then times the box area.
+  const double *p = state_.pressure.data();
+  const double n = static_cast<double>(grid_->n_pixels());
+  return grid_->area() * loops::sum(grid_->reductions(), grid_->n_pixels(), [&](std::int64_t i) {
+           return (p[i] > 0.0 ? p[i] : 0.0) / n;
+         });
+}
+
+double System::attractive_force() const {
+  const double *p = state_.pressure.data();
+  const double n = static_cast<double>(grid_->n_pixels());
+  return grid_->area() * loops::sum(grid_->reductions(), grid_->n_pixels(), [&](std::int64_t i) {
+           return (p[i] < 0.0 ? p[i] : 0.0) / n;
+         });
+}
+
 void System::displacement(double *out) const {
   // u = g + h - max h + delta, from the definition of the gap.
   const double shift = state_.penetration - max_height_;
   const double *g = state_.gap.data();
   const double *h = heights_.data();
   loops::for_each(grid_->n_pixels(), [&](std::int64_t i) { out[i] = g[i] + h[i] + shift; });
+}
+
+void System::set_adhesion(double work, double range) {
+  require_non_negative(work, "work_of_adhesion");
+  require_positive(range, "range");
+  if (work == 0.0) {
+    interaction_.reset(new HardWall());
+    return;
+  }
+  const double stress = work / range;
+  if (!std::isfinite(stress) || stress < DBL_MIN)
+    throw Error(Status::invalid_argument,
+                "arguments 'work_of_adhesion' " + format_number(work) + " and 'range' " +
+                    format_number(range) + ": the largest tensile stress w/rho = " +
+                    format_number(stress) + " is not a finite, normal double; rescale the units");
+  interaction_.reset(new ExponentialAdhesion(work, range));
 }
 
 void System::set_k0(double k0) {

@@ -28,6 +28,14 @@ class System {
   const Grid &grid() const { return *grid_; }
   const Substrate &substrate() const { return *substrate_; }
   const Interaction &interaction() const { return *interaction_; }
+  // The interaction: the hard wall with exponential adhesion phi(g) = -w exp(-g/rho), or the
+  // plain hard wall for work 0. Refuses (Error(invalid_argument), naming the argument) a work
+  // that is negative or not finite, a range that is not positive and finite, and a largest
+  // tensile stress w/rho that is not a finite, normal double. Nothing else changes: the state
+  // is kept as it is (an equilibrium of the old interaction, no longer of the new one), so
+  // that the next solve starts from it.
+  void set_adhesion(double work, double range);
+
   // Changes K~(0) keeping the pressure and the gap: only the rigid-body penetration moves, by
   // pbar (1/K~(0)new - 1/K~(0)old), so that the state stays an equilibrium.
   void set_k0(double k0);
@@ -56,6 +64,11 @@ class System {
 
   // Observables of the current state.
   double contact_fraction() const { return interaction_->contact_fraction(*grid_, state_); }
+  double attractive_fraction() const;  // pixels with negative pressure
+  // a times the sum of the positive pressures, and of the negative ones (<= 0).
+  double repulsive_force() const;
+  double attractive_force() const;
+  double interaction_energy() const { return interaction_->energy(*grid_, state_); }
   double mean_pressure() const;
   double mean_gap() const;
   double total_force() const;

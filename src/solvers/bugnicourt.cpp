@@ -1,6 +1,8 @@
 #include "solvers/bugnicourt.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 
 #include "core/loops.hpp"
@@ -16,6 +18,10 @@ namespace {
 // their number, and an evaluation costs one FFT pair.
 constexpr int updates_between_evaluations = 32;
 
+// Halvings of a step of the objective that is not quadratic that still raises it; 2^-30 of
+// the step is far below what would still change the iterate.
+constexpr int max_halvings = 30;
+
 // What a step did to the iterate: the factor that restored the mean (1 without a mean
 // constraint), and whether the bound cut it (then the gradient must be evaluated).
 struct Move {
@@ -30,12 +36,12 @@ class Steps {
   explicit Steps(Formulation &f)
       : f_(f), n_(f.size()), lower_(f.lower_bound()), reductions_(f.reductions()) {}
 
-  // x <- max(x + alpha d, lower), then the mean restored by a common factor (a uniform
-  // iterate if nothing is left above the bound).
-  Move move(double *x, const double *d, double alpha) const {
+  // x <- max(from + alpha d, lower), then the mean restored by a common factor (a uniform
+  // iterate if nothing is left above the bound). from may be x.
+  Move move(const double *from, double *x, const double *d, double alpha) const {
     const double lower = lower_;
     const auto s = loops::sums<2>(reductions_, n_, [&](std::int64_t i, double *sum) {
-      const double moved = x[i] + alpha * d[i];
+      const double moved = from[i] + alpha * d[i];
       x[i] = moved > lower ? moved : lower;
       sum[0] += x[i];
       sum[1] += moved < lower ? 1.0 : 0.0;
@@ -170,7 +176,7 @@ void bugnicourt(Formulation &f, Monitor &monitor) {
     }
     const double descent = along[0], curvature = along[1];
     const double alpha = -descent / curvature;
-    const Move move = steps.move(x, d.data(), alpha);
+    const Move move = steps.move(x, x, d.data(), alpha);
 
     // The gradient is evaluated after a cut, when the followed one is due for a refresh, and
     // before the monitor may call the iterate converged (or see a non-finite error).
@@ -190,13 +196,81 @@ void bugnicourt(Formulation &f, Monitor &monitor) {
   }
 }
 
+// Alg. 4 for an objective that is not quadratic (the gap with adhesion): the gradient is
+// evaluated after every step, and the step length is safeguarded. OUT-LIN's step is the
+// minimiser of the second-order model along d, -r.d / d.H d with the Hessian H at the
+// iterate (Bugnicourt et al. linearise the adhesive term's residual within the step); it is
+// taken when that curvature is positive and the step lowers the objective. Otherwise (the
+// curvature of strong adhesion can be negative, or the model can overshoot where phi'' grows
+// along the step) the step is -r.d / bound, with the formulation's upper bound on the
+// curvature along the whole line: for the hard wall with adhesion, whose adhesive energy is
+// concave, the elastic curvature d.K d, under which the objective lies below its quadratic
+// model, so that this step lowers it for certain (before the bound cuts it, as for the
+// quadratic). The conjugate direction uses beta = r.Hd / d.Hd as before, restarting where
+// that curvature is not positive.
+void bugnicourt_nonquadratic(Formulation &f, Monitor &monitor) {
+  const Steps steps(f);
+  const auto n = static_cast<std::size_t>(f.size());
+  double *x = f.variable().data();
+  Field g(n), start(n), r(n), d(n), h(n);
+
+  double value = f.value_and_gradient(x, g.data());
+  if (monitor.should_stop(0, observe(f, x, g.data(), value, monitor))) return;
+  steps.project_and_direct(x, g.data(), h.data(), 0.0, r.data(), d.data());
+
+  for (std::int64_t iteration = 1;; ++iteration) {
+    f.hessian_product(d.data(), h.data());
+    std::array<double, 2> along = steps.descent_and_curvature(r.data(), d.data(), h.data());
+    double bound = f.curvature_bound(d.data(), h.data());
+    if (!(along[0] < 0.0 && bound > 0.0)) {
+      // Not a descent direction after the projection changed the free set: restart from
+      // the projected steepest descent, which is one unless the iterate is stationary.
+      steps.new_direction(x, r.data(), 0.0, d.data());
+      f.hessian_product(d.data(), h.data());
+      along = steps.descent_and_curvature(r.data(), d.data(), h.data());
+      bound = f.curvature_bound(d.data(), h.data());
+      if (!(along[0] < 0.0 && bound > 0.0)) {
+        monitor.declare_stalled();
+        return;
+      }
+    }
+    const double descent = along[0], curvature = along[1];
+    const double safe = -descent / bound;
+    std::copy(x, x + n, start.data());
+    const bool newton = curvature > 0.0 && curvature < bound;
+    steps.move(start.data(), x, d.data(), newton ? -descent / curvature : safe);
+    double trial = f.value_and_gradient(x, g.data());
+    // A rise within 1e-12 of the values is taken for rounding, and the step kept. Where the
+    // elastic and adhesive energies cancel, rounding can exceed that; a good step is then
+    // replaced by the safe one, which costs an evaluation but never the descent.
+    const double slack = 1e-12 * std::fabs(value);
+    if (newton && !(trial <= value + slack)) {
+      steps.move(start.data(), x, d.data(), safe);
+      trial = f.value_and_gradient(x, g.data());
+    }
+    // The safe step descends before the bound cuts it; a cut can spoil that, but not for
+    // short steps (the cut then only drops components along which r.d >= 0). So it is
+    // halved while it raises the objective, a few times at most.
+    double alpha = safe;
+    for (int halving = 0; halving < max_halvings && !(trial <= value + slack); ++halving) {
+      alpha *= 0.5;
+      steps.move(start.data(), x, d.data(), alpha);
+      trial = f.value_and_gradient(x, g.data());
+    }
+    value = trial;
+    if (monitor.should_stop(iteration, observe(f, x, g.data(), value, monitor))) return;
+    steps.project_and_direct(x, g.data(), h.data(), curvature > 0.0 ? curvature : 0.0,
+                             r.data(), d.data());
+  }
+}
+
 bool on_the_gap(const OptionValues &options) { return options.text("variable") == "gap"; }
 
 Offer offer_for(const OptionValues &options) {
   if (on_the_gap(options))
     return {{Control::mean_gap, Control::penetration},
             {SubstrateKind::periodic},
-            {InteractionKind::hard_wall},
+            {InteractionKind::hard_wall, InteractionKind::adhesive_hard_wall},
             "variable = gap"};
   return {{Control::mean_pressure, Control::penetration},
           {SubstrateKind::periodic},
@@ -207,7 +281,10 @@ Offer offer_for(const OptionValues &options) {
 template <class Variable>
 void run_on(System &system, Control control, double value, Monitor &monitor) {
   Variable formulation(system, control, value);
-  bugnicourt(formulation, monitor);
+  if (formulation.quadratic())
+    bugnicourt(formulation, monitor);
+  else
+    bugnicourt_nonquadratic(formulation, monitor);
   conclude(formulation, system, monitor);
 }
 
@@ -227,14 +304,16 @@ AlgorithmSpec bugnicourt_algorithm() {
   spec.summary =
       "Bugnicourt et al.'s constrained conjugate gradient (OUT-LIN, Tribol. Lett. 2018; "
       "thesis section 3.1.2, Alg. 4) on the pressure (the objective is the complementary "
-      "energy, as for pk) or on the gap (the elastic energy)";
+      "energy, as for pk; no adhesion) or on the gap (the elastic energy plus the interaction "
+      "energy; with or without adhesion)";
   spec.controls = {Control::mean_pressure, Control::mean_gap, Control::penetration};
   spec.offer_for = offer_for;
   spec.substrates = {SubstrateKind::periodic};
-  spec.interactions = {InteractionKind::hard_wall};
+  spec.interactions = {InteractionKind::hard_wall, InteractionKind::adhesive_hard_wall};
   spec.options = {{"variable", OptionType::choice, 0.0, 0.0, 0.0, false, {"pressure", "gap"},
                    "the unknown: pressure (the dual problem; mean-pressure or penetration "
-                   "control) or gap (the primal; mean-gap or penetration control)"}};
+                   "control; no adhesion) or gap (the primal; mean-gap or penetration control; "
+                   "with or without adhesion)"}};
   spec.run = run;
   return spec;
 }

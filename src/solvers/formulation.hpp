@@ -33,12 +33,23 @@ class Formulation {
 
   // The objective at x and its gradient (in the inner product below).
   virtual double value_and_gradient(const double *x, double *gradient) = 0;
-  // The Hessian times a direction.
+  // Whether the objective is quadratic. Without adhesion every formulation's is; with it the
+  // primal's is not, and then the Hessian depends on the point and a solver must evaluate
+  // the gradient wherever it needs it.
+  virtual bool quadratic() const { return true; }
+  // The Hessian at the current iterate (variable()) times a direction.
   virtual void hessian_product(const double *direction, double *product) = 0;
-  // The objective is quadratic, f(x) = x.Hx/2 + c.x + f(0): writes c, the gradient at 0,
+  // An upper bound on the curvature d.H(y)d over every point y of the line through the
+  // current iterate along d, given d and product = H d at the iterate: a curvature whose
+  // step -g.d/bound along d lowers the objective for certain (before bounds cut the step).
+  // For a quadratic objective it is d.H d.
+  virtual double curvature_bound(const double *direction, const double *product) const {
+    return dot(direction, product);
+  }
+  // For a quadratic objective, f(x) = x.Hx/2 + c.x + f(0): writes c, the gradient at 0,
   // into out and returns f(0). A solver that keeps c can follow the gradient along a step
   // from Hessian products, g(s(x + a d)) = s (g(x) + a H d) + (1 - s) c, instead of
-  // evaluating it.
+  // evaluating it. (Of a formulation that is not quadratic it is only the gradient at 0.)
   virtual double gradient_at_zero(double *out) = 0;
   // The inner product of the variable's space (weighted for packed spectra).
   virtual double dot(const double *a, const double *b) const = 0;

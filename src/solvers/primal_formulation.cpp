@@ -48,17 +48,32 @@ void PrimalFormulation::apply_stiffness(const double *field, double *out) {
   counters_.transforms += 2;
 }
 
-double PrimalFormulation::value_and_gradient(const double *x, double *gradient) {
-  // u = x + (h - max h)/l + delta, then p = K u and E = (1/2) u.p, all scaled.
+void PrimalFormulation::elastic_pressure(const double *x, double *out) {
+  // u = x + (h - max h)/l + delta, then p = K u, scaled; u stays in displacement_.
   double *u = displacement_.data();
   const double per_length = 1.0 / length_unit_, top = max_height_, delta = penetration_;
   loops::for_each(n_, [&](std::int64_t i) {
     u[i] = x[i] + (heights_[i] - top) * per_length + delta;
   });
-  apply_stiffness(u, gradient);
+  apply_stiffness(u, out);
+}
+
+double PrimalFormulation::value_and_gradient(const double *x, double *gradient) {
+  // E = (1/2) u.p (+ sum_i phi(x_i) with adhesion), gradient p (+ phi'(x)), all scaled.
+  elastic_pressure(x, gradient);
   counters_.evaluations += 1;
-  return 0.5 * loops::sum(grid_.reductions(), n_,
-                          [&](std::int64_t i) { return u[i] * gradient[i]; });
+  const double *u = displacement_.data();
+  if (!adhesive_)
+    return 0.5 * loops::sum(grid_.reductions(), n_,
+                            [&](std::int64_t i) { return u[i] * gradient[i]; });
+  // One pass adds the interaction's pressure to the gradient and sums both energies.
+  const ExponentialPotential phi = adhesion_;
+  return loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
+    const ExponentialPotential::Terms t = phi.at(x[i]);
+    const double elastic = 0.5 * u[i] * gradient[i];
+    gradient[i] += t.dphi;
+    return elastic + t.phi;
+  });
 }
 
 double PrimalFormulation::gradient_at_zero(double *out) {
@@ -68,6 +83,23 @@ double PrimalFormulation::gradient_at_zero(double *out) {
 
 void PrimalFormulation::hessian_product(const double *direction, double *product) {
   apply_stiffness(direction, product);
+  if (!adhesive_) return;
+  // K d + phi''(x) d at the iterate x.
+  const double *x = state_.gap.data();
+  const ExponentialPotential phi = adhesion_;
+  loops::for_each(n_, [&](std::int64_t i) { product[i] += phi.d2phi(x[i]) * direction[i]; });
+}
+
+double PrimalFormulation::curvature_bound(const double *direction,
+                                          const double *product) const {
+  if (!adhesive_) return dot(direction, product);
+  // phi'' < 0 everywhere, so the Hessian at any point is below K: d.K d bounds the
+  // curvature along the whole line, and is d.H d less the interaction's part at x.
+  const double *x = state_.gap.data();
+  const ExponentialPotential phi = adhesion_;
+  return loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
+    return direction[i] * (product[i] - phi.d2phi(x[i]) * direction[i]);
+  });
 }
 
 double PrimalFormulation::error(const double *x, const double *gradient) const {
@@ -83,33 +115,50 @@ double PrimalFormulation::contact_fraction(const double *x) const {
 }
 
 bool PrimalFormulation::finish() {
-  // The pressure of the iterate, p = K u (scaled), into the state's pressure array.
+  // The elastic pressure of the iterate, p = K u (scaled), into the state's pressure array.
   double *g = state_.gap.data();
   double *p = state_.pressure.data();
-  value_and_gradient(g, p);
+  elastic_pressure(g, p);
+  // The interaction's pressure -phi'(g): 0 without adhesion; tensile, at most w/rho at the
+  // wall, with it. On the wall the pressure can be no lower than -phi'(0).
+  const ExponentialPotential phi = adhesion_;
+  const double wall_tension = adhesive_ ? -phi.dphi(0.0) : 0.0;
   if (control_ == Control::mean_gap) {
-    // The multiplier: the pressure on the free pixels is K u + pbar = 0 at the optimum, so
-    // pbar is minus the mean of K u there (K u has no mean). With no free pixel (a mean gap of
-    // 0) any pbar with p >= 0 fits; the smallest is taken.
+    // The multiplier: on the free pixels K u + pbar + phi'(g) = 0 at the optimum, so pbar is
+    // minus the mean of K u + phi'(g) there. With no free pixel (a mean gap of 0) any pbar
+    // with p >= -phi'(0) on the wall fits; the smallest is taken.
     const auto s = loops::sums<2>(grid_.reductions(), n_, [&](std::int64_t i, double *sum) {
       const double free = g[i] > 0.0 ? 1.0 : 0.0;
-      sum[0] += free * p[i];
+      const double interaction = adhesive_ && g[i] > 0.0 ? phi.dphi(g[i]) : 0.0;
+      sum[0] += free * (p[i] + interaction);
       sum[1] += free;
     });
     const double pbar =
-        s[1] > 0.0 ? -s[0] / s[1]
-                   : -loops::maximum(grid_.reductions(), n_, [&](std::int64_t i) { return -p[i]; });
+        s[1] > 0.0
+            ? -s[0] / s[1]
+            : wall_tension -
+                  loops::maximum(grid_.reductions(), n_, [&](std::int64_t i) { return -p[i]; });
     loops::for_each(n_, [&](std::int64_t i) { p[i] += pbar; });
   }
-  // The state is the hard wall's reading of the iterate: no pressure where the gap is open
-  // (there it is rounding at the optimum), none negative; then the gap that pressure makes,
-  // so that the state is consistent and its contact set is that of the iterate.
+  // The state is the hard wall's reading of the iterate: where the gap is open, the pressure
+  // the interaction exerts there (none without adhesion, -phi'(g) with it: at the optimum K u
+  // differs from it only by the residual); on the wall K u, clipped below at -phi'(0)
+  // (0 without adhesion), since the wall can push but not pull, and what lies below is the
+  // residual of the iterate. Then the gap that this pressure makes, so that the state is
+  // consistent and its contact set is that of the iterate.
   const double pressure = pressure_unit_, n = static_cast<double>(n_);
-  const double mean_pressure = loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
-    const double clipped = g[i] > 0.0 ? 0.0 : (p[i] > 0.0 ? p[i] : 0.0);
-    p[i] = clipped * pressure;
-    return p[i] / n;
-  });
+  const double mean_pressure =
+      adhesive_ ? loops::sum(grid_.reductions(), n_,
+                             [&](std::int64_t i) {
+                               const double on_wall = p[i] > wall_tension ? p[i] : wall_tension;
+                               p[i] = (g[i] > 0.0 ? -phi.dphi(g[i]) : on_wall) * pressure;
+                               return p[i] / n;
+                             })
+                : loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
+                    const double clipped = g[i] > 0.0 ? 0.0 : (p[i] > 0.0 ? p[i] : 0.0);
+                    p[i] = clipped * pressure;
+                    return p[i] / n;
+                  });
   double *u = displacement_.data();
   substrate_.forward(p, spectrum_.data());
   Complex *s = spectrum_.data();

@@ -1,7 +1,11 @@
-// The primal (gap) formulation of the non-adhesive hard-wall contact (thesis section 2.2):
-// minimise the elastic energy of the displacement that the gap makes,
-//     E(g) = (a/2) u.K u,   u = g + h - max h + delta,   over g >= 0,
-// whose gradient is a times the pressure p = K u. Under penetration control delta is given
+// The primal (gap) formulation of the hard-wall contact, with or without exponential adhesion
+// (thesis section 2.2): minimise the elastic energy of the displacement that the gap makes
+// plus the interaction energy,
+//     E(g) = (a/2) u.K u + a sum_i phi(g_i),   u = g + h - max h + delta,   over g >= 0,
+// whose gradient is a times K u + phi'(g), the elastic pressure less the interaction's
+// pressure -phi'(g). Without adhesion phi = 0, no potential is evaluated and the objective is
+// quadratic; with it, it is not (phi'' depends on g, and is negative: the Hessian K + phi''
+// can lose its positivity for strong adhesion). Under penetration control delta is given
 // and K includes the q = 0 stiffness K~(0). Under mean-gap control the mean of g is fixed; the
 // q = 0 term is left out (the mean displacement does not change the energy of the q != 0
 // modes), and the mean pressure is the Lagrange multiplier of the constraint.
@@ -10,7 +14,8 @@
 // error is the largest residual of the optimality conditions in units of P.
 //
 // During a solve the system's gap array holds the scaled iterate; finish() turns it back into
-// the gap, and stores the pressure it makes and the penetration.
+// the gap, and stores the pressure it makes and the penetration. With adhesion the pressure
+// where the gap is open is the interaction's, -phi'(g) (tensile).
 #pragma once
 
 #include "physics/system.hpp"
@@ -28,8 +33,12 @@ class PrimalFormulation final : public ScaledFormulation {
   PrimalFormulation(System &system, Control control, double value);
 
   Field &variable() override { return state_.gap; }
+  bool quadratic() const override { return !adhesive_; }
   double value_and_gradient(const double *x, double *gradient) override;
+  // K d (+ phi''(x) d at the iterate x with adhesion).
   void hessian_product(const double *direction, double *product) override;
+  // d.K d: phi'' < 0 makes K an upper bound of every Hessian.
+  double curvature_bound(const double *direction, const double *product) const override;
   double gradient_at_zero(double *out) override;
   double lower_bound() const override { return 0.0; }
   bool constrains_mean() const override { return control_ == Control::mean_gap; }
@@ -44,6 +53,9 @@ class PrimalFormulation final : public ScaledFormulation {
  private:
   // K u (scaled) of a field, into out; the q = 0 mode only under penetration control.
   void apply_stiffness(const double *field, double *out);
+  // The scaled elastic pressure K u of the displacement the gap x makes, into out (u into
+  // displacement_).
+  void elastic_pressure(const double *x, double *out);
 
   const Field &stiffness_;  // normalised: backward(stiffness * forward(u)) = K u
   double penetration_;  // scaled, in u (0 under mean-gap control, where it does not matter)

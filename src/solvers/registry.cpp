@@ -90,9 +90,11 @@ void check_request(const AlgorithmSpec &algorithm, const OptionValues &options,
                                          substrate_name(system.substrate().kind()) +
                                          " (it works on: " + names(s, substrate_name) + ")");
   const auto &i = offer.interactions;
+  const std::string interaction = interaction_name(system.interaction().kind());
+  const bool vowel = interaction.find_first_of("aeiou") == 0;
   if (std::find(i.begin(), i.end(), system.interaction().kind()) == i.end())
-    throw Error(Status::unsupported, solver + " does not handle a " +
-                                         interaction_name(system.interaction().kind()) +
+    throw Error(Status::unsupported, solver + " does not handle " + (vowel ? "an " : "a ") +
+                                         interaction +
                                          " (it handles: " + names(i, interaction_name) + ")");
 }
 

@@ -38,6 +38,8 @@ class ScaledFormulation : public Formulation {
     length_unit_ = units.length;
     energy_unit_ = units.energy;
     target_ = units.target;
+    adhesive_ = exponential_adhesion(system.interaction()) != nullptr;
+    adhesion_ = {units.adhesion_work, units.adhesion_range};
   }
 
   System &system_;
@@ -53,6 +55,8 @@ class ScaledFormulation : public Formulation {
   double length_unit_;    // P/k
   double energy_unit_;    // a P^2/k
   double target_;         // the control's value, scaled
+  bool adhesive_;                 // the hard wall with exponential adhesion
+  ExponentialPotential adhesion_;  // its potential in scaled units, phi(x) of the scaled gap
 };
 
 }  // namespace asp

@@ -19,9 +19,13 @@ SceneUnits scene_units(const System &system, Control control, double value) {
   const Substrate &substrate = system.substrate();
   const bool load = control == Control::mean_pressure;
   const double k = substrate.pixel_stiffness();
-  const double control_scale = load ? std::fabs(value) : substrate.k0() * std::fabs(value);
+  const ExponentialAdhesion *adhesion = exponential_adhesion(system.interaction());
+  double control_scale = load ? std::fabs(value) : substrate.k0() * std::fabs(value);
+  if (!std::isfinite(control_scale)) control_scale = 0.0;
+  const double tensile_stress = adhesion != nullptr ? adhesion->work() / adhesion->range() : 0.0;
+  if (tensile_stress > control_scale) control_scale = tensile_stress;
   SceneUnits units;
-  units.pressure = system.reference_pressure(std::isfinite(control_scale) ? control_scale : 0.0);
+  units.pressure = system.reference_pressure(control_scale);
   units.length = units.pressure / k;
   units.energy = system.grid().pixel_area() * units.pressure * units.length;
   units.target = load ? value / units.pressure : value / units.length;
@@ -32,12 +36,31 @@ SceneUnits scene_units(const System &system, Control control, double value) {
   // Under load control the mean displacement pbar/K~(0) joins the penetration; a soft mean
   // mode (small K~(0)) makes it much larger than the pressure scale.
   const double mean_displacement = load ? std::fabs(units.target) * (k / substrate.k0()) : 0.0;
-  const double extent = 1.0 + std::fabs(units.target) + range + mean_displacement;
   if (!normal(units.pressure) || !normal(units.length))
     throw Error(Status::invalid_argument,
                 "the scene's pressure scale " + format_number(units.pressure) +
                     " or length scale " + format_number(units.length) +
                     " is not a normal double; rescale the modulus or the heights");
+  double stress = 0.0;  // w/rho in units of P
+  if (adhesion != nullptr) {
+    // phi' at most w/rho, phi'' at most w/rho^2: both must stay well inside doubles in these
+    // units (the latter is the adhesive stiffness per pixel stiffness), and so must the work.
+    stress = tensile_stress / units.pressure;
+    units.adhesion_range = adhesion->range() / units.length;
+    units.adhesion_work = stress * units.adhesion_range;
+    const double stiffness = stress / units.adhesion_range;
+    if (!(stress <= largest_scaled) || !(stiffness <= largest_scaled) ||
+        !(units.adhesion_work <= largest_scaled) || !normal(units.adhesion_range))
+      throw Error(Status::invalid_argument,
+                  "the adhesion (work " + format_number(adhesion->work()) + ", range " +
+                      format_number(adhesion->range()) + ") is out of proportion with the " +
+                      "scene's pressure scale " + format_number(units.pressure) +
+                      " and length scale " + format_number(units.length) +
+                      ": w/rho, w/rho^2 or the work would not be representable in the solve; "
+                      "rescale the adhesion or set a reference pressure");
+  }
+  // Pressures reach the adhesion's tensile stress besides the scales of the load and heights.
+  const double extent = 1.0 + std::fabs(units.target) + range + mean_displacement + stress;
   if (!(std::fabs(units.target) <= largest_scaled))
     throw Error(Status::invalid_argument,
                 "argument 'value' is " + format_number(value) + ", " +
@@ -47,7 +70,8 @@ SceneUnits scene_units(const System &system, Control control, double value) {
                     "; such a solve cannot be represented in doubles");
   if (!(range <= largest_scaled) || !(mean_displacement <= largest_scaled) ||
       !representable(units.pressure * n * extent) || !representable(units.length * n * extent) ||
-      !representable(units.energy * n * extent * extent))
+      !representable(units.energy * n * extent * extent) ||
+      !representable(units.energy * n * units.adhesion_work))
     throw Error(Status::invalid_argument,
                 "argument 'value' is " + format_number(value) + ": with heights spanning " +
                     format_number(system.height_range()) + " and K~(0) = " +

@@ -14,8 +14,16 @@ struct SceneUnits {
   double length;    // P/k
   double energy;    // a P^2/k (per unit length in 1D)
   double target;    // the control's value in these units
+  // The exponential adhesion in these units (0 and 1 without adhesion): phi(g)/(P l) as a
+  // function of g/l is -work exp(-(g/l)/range), l = P/k.
+  double adhesion_work = 0.0;   // w/(P l)
+  double adhesion_range = 1.0;  // rho/l
 };
 
+// The reference pressure P is the system's (System::reference_pressure); with adhesion, a
+// surface without slope takes the larger of the control's own scale and the largest tensile
+// stress w/rho, so that a purely adhesive scene is measured in its own pressures.
+//
 // Throws Error(invalid_argument) naming 'value' or the scene's scales when the solve cannot
 // be represented; touches nothing.
 SceneUnits scene_units(const System &system, Control control, double value);

@@ -78,7 +78,7 @@ program test_api
   real(c_double), parameter :: tolerance = 1d-10
   character(len=*), parameter :: wisdom_file = 'fortran_api.wisdom'
 
-  type(c_ptr) :: grid, system, solver, no_solver
+  type(c_ptr) :: grid, system, solver, no_solver, adhesive_solver
   type(progress_counter), target :: counter
   real(c_double), allocatable :: heights(:, :), pressure(:, :), column(:)
   real(c_double), allocatable :: seconds(:), errors(:), evaluations(:), transforms(:)
@@ -281,7 +281,7 @@ program test_api
   call expect(rows == iterations + 1, 'each solve starts a new history, one row per iteration')
 
   ! ---- scalar results and a field ----
-  do k = ASP_CONTACT_FRACTION, ASP_MEAN_MODE_ENERGY
+  do k = ASP_CONTACT_FRACTION, ASP_ADHESION_RANGE
     call expect_status(asp_system_get(system, k, scalar), ASP_OK, 'asp_system_get')
     call expect(ieee_is_finite(scalar), 'every scalar result is finite')
   end do
@@ -318,6 +318,48 @@ program test_api
   call expect_status(asp_solver_history_length(solver, rows), ASP_OK, &
                      'asp_solver_history_length')
   call expect(rows == 0, 'no history is recorded when it is off')
+
+  ! ---- adhesion: bad arguments refused by name, then the sphere pulled by adhesion ----
+  call expect_status(asp_system_set_adhesion(system, -1d-4, 1d-3), ASP_ERR_INVALID_ARGUMENT, &
+                     'a negative work of adhesion')
+  call expect(index(asp_last_error_text(), 'work_of_adhesion') > 0, &
+              'the message names the work of adhesion: ' // asp_last_error_text())
+  call expect_status(asp_system_set_adhesion(system, 1d-4, 0d0), ASP_ERR_INVALID_ARGUMENT, &
+                     'a zero range')
+  call expect(index(asp_last_error_text(), 'range') > 0, &
+              'the message names the range: ' // asp_last_error_text())
+  call expect_status(asp_system_get(system, ASP_PENETRATION, value), ASP_OK, &
+                     'asp_system_get(PENETRATION)')
+  call expect_status(asp_system_set_adhesion(system, 1d-4, 2d-3), ASP_OK, &
+                     'asp_system_set_adhesion')
+  call expect_status(asp_system_get(system, ASP_WORK_OF_ADHESION, scalar), ASP_OK, &
+                     'asp_system_get(WORK_OF_ADHESION)')
+  call expect(scalar == 1d-4, 'the work of adhesion is the one set')
+  call expect_status(asp_solver_solve(solver, system, ASP_CONTROL_PENETRATION, value), &
+                     ASP_ERR_UNSUPPORTED, '"pk" refuses adhesion')
+  call expect(index(asp_last_error_text(), 'adhesive hard wall') > 0, &
+              'the message names the interaction: ' // asp_last_error_text())
+  call expect_status(asp_solver_create_f('bugnicourt', adhesive_solver), ASP_OK, &
+                     'asp_solver_create_f(bugnicourt)')
+  call expect_status(asp_solver_set_option_string_f(adhesive_solver, 'variable', 'gap'), ASP_OK, &
+                     'variable = gap')
+  call expect_status(asp_solver_solve(adhesive_solver, system, ASP_CONTROL_PENETRATION, value), &
+                     ASP_OK, 'bugnicourt on the gap with adhesion')
+  call expect_status(asp_solver_converged(adhesive_solver, converged), ASP_OK, &
+                     'asp_solver_converged')
+  call expect(converged == 1, 'the adhesive solve converges')
+  call expect_status(asp_system_get(system, ASP_ATTRACTIVE_FORCE, scalar), ASP_OK, &
+                     'asp_system_get(ATTRACTIVE_FORCE)')
+  call expect(scalar < 0, 'adhesion pulls')
+  call expect_status(asp_system_get(system, ASP_INTERACTION_ENERGY, scalar), ASP_OK, &
+                     'asp_system_get(INTERACTION_ENERGY)')
+  call expect(scalar < 0, 'the interaction energy of adhesion is negative')
+  call expect_status(asp_system_set_adhesion(system, 0d0, 1d0), ASP_OK, &
+                     'asp_system_set_adhesion(0): the plain hard wall again')
+  call expect_status(asp_system_get(system, ASP_WORK_OF_ADHESION, scalar), ASP_OK, &
+                     'asp_system_get(WORK_OF_ADHESION)')
+  call expect(scalar == 0, 'no work of adhesion after setting 0')
+  call asp_solver_destroy(adhesive_solver)
 
   ! ---- FFTW wisdom ----
   call expect_status(asp_fft_export_wisdom_f(wisdom_file), ASP_OK, 'asp_fft_export_wisdom_f')
