@@ -192,6 +192,8 @@ void bugnicourt(Formulation &f, Monitor &monitor) {
 
 bool on_the_gap(const OptionValues &options) { return options.text("variable") == "gap"; }
 
+// The gap formulation needs the stiffness K on the substrate's spectral space, which a free
+// half-space does not have (the inverse of its compliance on the box is not a convolution).
 Offer offer_for(const OptionValues &options) {
   if (on_the_gap(options))
     return {{Control::mean_gap, Control::penetration},
@@ -199,7 +201,7 @@ Offer offer_for(const OptionValues &options) {
             {InteractionKind::hard_wall},
             "variable = gap"};
   return {{Control::mean_pressure, Control::penetration},
-          {SubstrateKind::periodic},
+          {SubstrateKind::periodic, SubstrateKind::free},
           {InteractionKind::hard_wall},
           "variable = pressure"};
 }
@@ -230,7 +232,7 @@ AlgorithmSpec bugnicourt_algorithm() {
       "energy, as for pk) or on the gap (the elastic energy)";
   spec.controls = {Control::mean_pressure, Control::mean_gap, Control::penetration};
   spec.offer_for = offer_for;
-  spec.substrates = {SubstrateKind::periodic};
+  spec.substrates = {SubstrateKind::periodic, SubstrateKind::free};
   spec.interactions = {InteractionKind::hard_wall};
   spec.options = {{"variable", OptionType::choice, 0.0, 0.0, 0.0, false, {"pressure", "gap"},
                    "the unknown: pressure (the dual problem; mean-pressure or penetration "
