@@ -315,7 +315,9 @@ ASP_EXPORT int asp_system_set_k0(asp_system *system, double k0);
 
 /* The reference pressure that solver errors are divided by (see asp_solver_solve). Default 0:
  * use E* h'_rms/2, the rms pressure of full contact, the scale of local contact pressures at
- * any load. For a surface without slope (the flat) a solve uses its own scale instead: the
+ * any load (on a free system, h'_rms from the differences between neighbouring pixels inside
+ * the box, so that the step between the opposite edges of a non-periodic surface does not
+ * count). For a surface without slope (the flat) a solve uses its own scale instead: the
  * mean pressure, or K~(0) times the penetration (E* if that is zero too). A value > 0
  * overrides all this. */
 ASP_EXPORT int asp_system_set_reference_pressure(asp_system *system, double reference_pressure);

@@ -39,8 +39,11 @@ void System::set_topography(const double *heights) {
     throw Error(Status::invalid_argument,
                 "array 'heights' spans " + format_number(bottom) + " to " + format_number(top) +
                     "; the range max - min must be a finite double");
-  const double slope_pressure =
-      0.5 * substrate_->contact_modulus() * surface_statistics(*grid_, heights).rms_slope;
+  // A free substrate's heights need not be periodic: their slope is taken inside the box.
+  const double rms_slope = substrate_->kind() == SubstrateKind::free
+                               ? rms_slope_within_box(*grid_, heights)
+                               : surface_statistics(*grid_, heights).rms_slope;
+  const double slope_pressure = 0.5 * substrate_->contact_modulus() * rms_slope;
   if (!std::isfinite(slope_pressure))
     throw Error(Status::invalid_argument,
                 "array 'heights': the pressure scale E* h'_rms/2 of this surface is not a "

@@ -236,7 +236,8 @@ AlgorithmSpec bugnicourt_algorithm() {
   spec.interactions = {InteractionKind::hard_wall};
   spec.options = {{"variable", OptionType::choice, 0.0, 0.0, 0.0, false, {"pressure", "gap"},
                    "the unknown: pressure (the dual problem; mean-pressure or penetration "
-                   "control) or gap (the primal; mean-gap or penetration control)"}};
+                   "control) or gap (the primal; mean-gap or penetration control; periodic "
+                   "substrate only)"}};
   spec.run = run;
   return spec;
 }

@@ -278,6 +278,27 @@ TEST(FreeHalfSpace, SmallContactAgreesWithPeriodicUpToImages) {
   }
 }
 
+// ---- the reference pressure of a surface that is not periodic -------------------------------
+
+// A tilted plane h = s x + t y: its slope is sqrt(s^2 + t^2) everywhere, and a free system's
+// reference pressure E* h'_rms/2 says so to round-off (differences of a plane are exact up to
+// rounding, 1e-12). Read as periodic, the step between its opposite edges would count too: the
+// spectral slope of the same heights is many times larger.
+TEST(FreeHalfSpace, ReferencePressureIgnoresTheStepAcrossTheEdges) {
+  const std::int64_t nx = 48, ny = 20;
+  const double lx = 1.5, ly = 0.5, s = 0.03, t = -0.02, modulus = 3.0;
+  auto grid = asp_test::grid_2d(nx, ny, lx, ly);
+  Vector h(static_cast<std::size_t>(nx * ny));
+  for (std::int64_t j = 0; j < ny; ++j)
+    for (std::int64_t i = 0; i < nx; ++i) h[i + nx * j] = s * i * lx / nx + t * j * ly / ny;
+  asp::System free(grid, modulus, asp::SubstrateKind::free), periodic(grid, modulus);
+  free.set_topography(h.data());
+  periodic.set_topography(h.data());
+  const double expected = 0.5 * modulus * std::hypot(s, t);
+  EXPECT_NEAR(free.last_reference_pressure(), expected, 1e-12 * expected);
+  EXPECT_GT(periodic.last_reference_pressure(), 3.0 * expected);
+}
+
 // ---- what it refuses ------------------------------------------------------------------------
 
 TEST(FreeHalfSpace, RefusesA1DGridNamingIt) {
