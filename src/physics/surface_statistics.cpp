@@ -139,7 +139,8 @@ double rms_slope_within_box(const Grid &grid, const double *heights) {
     sum[1] += along_y * along_y;
   });
   const double dx = grid.lx() / static_cast<double>(nx), dy = grid.ly() / static_cast<double>(ny);
-  const double pairs_x = static_cast<double>((nx - 1) * ny), pairs_y = static_cast<double>(nx * (ny - 1));
+  const double pairs_x = static_cast<double>((nx - 1) * ny);
+  const double pairs_y = static_cast<double>(nx * (ny - 1));
   const double slope_x = pairs_x > 0.0 ? std::sqrt(sums[0] / pairs_x) / dx : 0.0;
   const double slope_y = pairs_y > 0.0 ? std::sqrt(sums[1] / pairs_y) / dy : 0.0;
   return std::ldexp(std::hypot(slope_x, slope_y), exponent);

@@ -140,7 +140,8 @@ HertzErrors hertz(const char *algorithm, int a_pixels) {
   const double delta = a * a / radius;
   asp::Solver solver(algorithm);
   solver.set_option("tolerance", 1e-10);
-  if (std::string(algorithm) == "bugnicourt") solver.set_option("variable", std::string("pressure"));
+  if (std::string(algorithm) == "bugnicourt")
+    solver.set_option("variable", std::string("pressure"));
   solver.solve(system, asp::Control::penetration, delta);
   EXPECT_TRUE(solver.report().converged()) << algorithm << " a/dx = " << a_pixels;
 
