@@ -84,9 +84,11 @@ module asperity
             asp_topography_sinusoid, asp_topography_double_sinewave, &
             asp_topography_self_affine, asp_topography_statistics, &
             asp_topography_power_spectrum
-  public :: asp_system_create, asp_system_destroy, asp_system_set_topography, &
+  public :: asp_system_create, asp_system_create_free, asp_system_destroy, &
+            asp_system_set_topography, &
             asp_system_set_k0, asp_system_set_adhesion, asp_system_set_reference_pressure, &
-            asp_system_reset, asp_system_get, asp_system_get_field
+            asp_system_reset, &
+            asp_system_get, asp_system_get_field
   public :: asp_algorithms
   public :: asp_solver_create, asp_solver_destroy, asp_solver_describe, asp_solver_set_option, &
             asp_solver_set_option_string, asp_solver_get_option, asp_solver_get_option_string, &
@@ -270,6 +272,14 @@ module asperity
       real(c_double), value :: contact_modulus
       type(c_ptr), intent(out) :: out
       integer(c_int) :: asp_system_create
+    end function
+    function asp_system_create_free(grid, contact_modulus, out) &
+        bind(c, name='asp_system_create_free')
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: grid
+      real(c_double), value :: contact_modulus
+      type(c_ptr), intent(out) :: out
+      integer(c_int) :: asp_system_create_free
     end function
     subroutine asp_system_destroy(system) bind(c, name='asp_system_destroy')
       import :: c_ptr

@@ -266,6 +266,38 @@ typedef struct asp_system asp_system;
  * flat topography and zero pressure. The system keeps the grid alive. E* must leave the
  * stiffness of every mode of the grid a finite, normal double. */
 ASP_EXPORT int asp_system_create(const asp_grid *grid, double contact_modulus, asp_system **out);
+
+/* A free (non-periodic) elastic half-space of contact modulus E* = contact_modulus > 0 on a 2D
+ * grid: pressure acts only inside the grid's box lx x ly, and the surface around it is
+ * unloaded and free, as under a measured, non-periodic topography or a single asperity. The
+ * displacement is Love's solution for a pressure uniform over each pixel (Johnson, Contact
+ * Mechanics, section 3.2, eq. 3.25):
+ *   u(x) = 1/(pi E*) * sum over pixels of p times the integral of 1/|x - s| over the pixel,
+ * computed exactly (to round-off) by FFTs of the grid zero-padded to 2nx x 2ny. There is no
+ * q = 0 ambiguity: u vanishes far away, so the penetration delta is the approach of distant
+ * points, as in Hertz's theory, and no K~(0) is involved. Otherwise it is used like a periodic
+ * system, with these differences:
+ *   - asp_system_set_k0 and asp_system_get with ASP_K0 return ASP_ERR_UNSUPPORTED;
+ *   - ASP_ELASTIC_ENERGY is the whole elastic energy (a/2) sum p u, and ASP_MEAN_MODE_ENERGY
+ *     is 0;
+ *   - the solvers on the pressure work on it ("pk"; "bugnicourt" with "variable" =
+ *     "pressure"); a solver on the gap is refused with ASP_ERR_UNSUPPORTED, because the
+ *     inverse of the compliance restricted to the box is not a convolution;
+ *   - in the error measure the stiffness of one pixel is 1/C(0), C(0) the displacement of a
+ *     pixel under unit pressure on itself (4 ln(1 + sqrt 2) dx/(pi E*), about 1.12 dx/E*,
+ *     for square pixels of width dx); for a surface without slope the scale of a solve
+ *     under penetration control is the stiffness under uniform pressure on the box (mean
+ *     pressure over the mean displacement it makes) times the penetration.
+ * Cost: every transform is of the padded grid, about 4 times that of a periodic one; the
+ * system holds 32 bytes per pixel more (a padded work field) and a solve's spectra are 4
+ * times larger (see docs/performance.md).
+ * A 1D grid is refused with ASP_ERR_UNSUPPORTED naming 'grid': under plane strain the
+ * displacement of a loaded free half-space grows like the logarithm of the distance and is
+ * defined only relative to a reference point, so there is no unique force-penetration
+ * relation. E* must leave the influence coefficients of the grid, their inverses and their
+ * sums finite, normal doubles (ASP_ERR_INVALID_ARGUMENT naming 'contact_modulus'). */
+ASP_EXPORT int asp_system_create_free(const asp_grid *grid, double contact_modulus,
+                                      asp_system **out);
 ASP_EXPORT void asp_system_destroy(asp_system *system);
 
 /* Copies n = nx*ny finite heights whose range max - min is a finite double. Resets the state
@@ -277,7 +309,8 @@ ASP_EXPORT int asp_system_set_topography(asp_system *system, const double *heigh
  * it changes mean displacement and penetration, not the pressure under mean-pressure control,
  * and not ASP_ELASTIC_ENERGY (see ASP_MEAN_MODE_ENERGY). The current state keeps its pressure
  * and gap; its penetration moves by pbar (1/K~(0)new - 1/K~(0)old), so that it stays an
- * equilibrium (refused if that penetration is not a finite double). */
+ * equilibrium (refused if that penetration is not a finite double). A free system (see
+ * asp_system_create_free) has no K~(0): ASP_ERR_UNSUPPORTED. */
 ASP_EXPORT int asp_system_set_k0(asp_system *system, double k0);
 
 /* The interaction: a hard wall (g >= 0) with exponential adhesion, an energy per unit area
@@ -301,9 +334,12 @@ ASP_EXPORT int asp_system_set_adhesion(asp_system *system, double work_of_adhesi
 
 /* The reference pressure that solver errors are divided by (see asp_solver_solve). Default 0:
  * use E* h'_rms/2, the rms pressure of full contact, the scale of local contact pressures at
- * any load. For a surface without slope (the flat) a solve uses its own scale instead: the
- * mean pressure, or K~(0) times the penetration, or with adhesion the largest tensile stress
- * w/rho if that is larger (E* if all are zero). A value > 0 overrides all this. */
+ * any load (on a free system, h'_rms from the differences between neighbouring pixels inside
+ * the box, so that the step between the opposite edges of a non-periodic surface does not
+ * count). For a surface without slope (the flat) a solve uses its own scale instead: the
+ * mean pressure, or K~(0) times the penetration (on a free system the stiffness under a
+ * uniform pressure), or with adhesion the largest tensile stress w/rho if that is larger
+ * (E* if all are zero). A value > 0 overrides all this. */
 ASP_EXPORT int asp_system_set_reference_pressure(asp_system *system, double reference_pressure);
 
 /* Forgets the state (zero pressure), so the next solve starts cold. */
@@ -317,13 +353,16 @@ ASP_EXPORT int asp_system_reset(asp_system *system);
 #define ASP_MEAN_PRESSURE 302      /* mean of p over all pixels */
 #define ASP_MEAN_GAP 303           /* mean of g over all pixels */
 #define ASP_ELASTIC_ENERGY 304     /* (A/2) sum over q != 0 of K~(q)|u^_q|^2: the energy of the
-                                      deformation, independent of the K~(0) convention */
+                                      deformation, independent of the K~(0) convention; on
+                                      a free system all of it, (a/2) sum p u */
 #define ASP_PENETRATION 305        /* delta */
 #define ASP_TOTAL_FORCE 306        /* mean pressure times lx*ly (1D: times lx) */
-#define ASP_K0 307                 /* the q = 0 stiffness in use */
+#define ASP_K0 307                 /* the q = 0 stiffness in use (ASP_ERR_UNSUPPORTED on a
+                                      free system, which has none) */
 #define ASP_REFERENCE_PRESSURE 308 /* the reference pressure of the last solve */
 #define ASP_MEAN_MODE_ENERGY 309   /* the q = 0 term A pbar^2/(2 K~(0)), kept apart because it
-                                      depends on K~(0); ELASTIC + MEAN_MODE = (a/2) sum p u */
+                                      depends on K~(0); ELASTIC + MEAN_MODE = (a/2) sum p u;
+                                      0 on a free system */
 #define ASP_ATTRACTIVE_FRACTION 310 /* fraction of pixels with negative (tensile) pressure */
 #define ASP_REPULSIVE_FORCE 311    /* a times the sum of the positive pressures (a the pixel
                                       area; 1D: the pixel length) */
@@ -362,14 +401,15 @@ typedef struct asp_solver asp_solver;
 
 /* An algorithm by name (see asp_algorithms and docs/algorithms.md):
  *   "pk"          Polonsky & Keer constrained conjugate gradient on the pressure (hard wall,
- *                 no adhesion, periodic substrate). Controls: ASP_CONTROL_MEAN_PRESSURE,
- *                 ASP_CONTROL_PENETRATION.
+ *                 no adhesion, periodic or free substrate). Controls:
+ *                 ASP_CONTROL_MEAN_PRESSURE, ASP_CONTROL_PENETRATION.
  *   "bugnicourt"  Bugnicourt et al.'s constrained conjugate gradient (OUT-LIN, 2018; hard
- *                 wall, periodic substrate), on the pressure (option "variable" =
- *                 "pressure", the default; controls as "pk"; no adhesion) or on the gap
+ *                 wall), on the pressure (option "variable" = "pressure", the default;
+ *                 controls as "pk"; no adhesion; periodic or free substrate) or on the gap
  *                 ("gap"; controls ASP_CONTROL_MEAN_GAP, ASP_CONTROL_PENETRATION; with or
- *                 without adhesion, see asp_system_set_adhesion). Faster than "pk" near full
- *                 contact. Stops as stalled also when it has no descent direction left. */
+ *                 without adhesion, see asp_system_set_adhesion; periodic substrate only).
+ *                 Faster than "pk" near full contact. Stops as stalled also when it has no
+ *                 descent direction left. */
 ASP_EXPORT int asp_solver_create(const char *algorithm, asp_solver **out);
 ASP_EXPORT void asp_solver_destroy(asp_solver *solver);
 

@@ -22,6 +22,18 @@ int asp_system_create(const asp_grid *grid, double contact_modulus, asp_system *
   });
 }
 
+int asp_system_create_free(const asp_grid *grid, double contact_modulus, asp_system **out) {
+  if (out != nullptr) *out = nullptr;
+  return guarded("asp_system_create_free", [&] {
+    asp::require_not_null(grid, "grid");
+    asp::require_not_null(out, "out");
+    std::unique_ptr<asp_system> handle(new asp_system);
+    handle->system.reset(
+        new asp::System(grid->grid, contact_modulus, asp::SubstrateKind::free));
+    *out = handle.release();
+  });
+}
+
 void asp_system_destroy(asp_system *system) { delete system; }
 
 int asp_system_set_topography(asp_system *system, const double *heights, int64_t n) {
@@ -77,7 +89,13 @@ int asp_system_get(const asp_system *system, int key, double *value) {
       case ASP_ELASTIC_ENERGY: result = s.elastic_energy(); break;
       case ASP_PENETRATION: result = s.state().penetration; break;
       case ASP_TOTAL_FORCE: result = s.total_force(); break;
-      case ASP_K0: result = s.substrate().k0(); break;
+      case ASP_K0:
+        if (!s.substrate().has_k0())
+          throw asp::Error(asp::Status::unsupported,
+                           "argument 'key' is ASP_K0, but the system is on a free "
+                           "half-space, which has no K~(0) (no q = 0 ambiguity)");
+        result = s.substrate().k0();
+        break;
       case ASP_REFERENCE_PRESSURE: result = s.last_reference_pressure(); break;
       case ASP_MEAN_MODE_ENERGY: result = s.mean_mode_energy(); break;
       case ASP_ATTRACTIVE_FRACTION: result = s.attractive_fraction(); break;

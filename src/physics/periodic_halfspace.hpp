@@ -24,15 +24,22 @@ class PeriodicHalfSpace final : public Substrate {
   Spectrum make_spectrum() const override { return grid_.make_spectrum(); }
   void forward(const double *field, Complex *spectrum) const override;
   void backward(Complex *spectrum, double *field) const override;
+  double transform_points() const override { return static_cast<double>(grid_.n_pixels()); }
 
   const Field &normalised_compliance() const override;
   const Field &normalised_stiffness() const override;
   double pixel_stiffness() const override { return pixel_stiffness_; }
 
+  bool has_k0() const override { return true; }
   double k0() const override { return k0_; }
   void set_k0(double k0) override;
+  // A uniform pressure moves only the q = 0 mode.
+  double uniform_pressure_stiffness() const override { return k0_; }
 
-  double elastic_energy(const double *displacement) const override;
+  double elastic_energy_of_pressure(const double *pressure) const override;
+  // (A/2) sum over q != 0 of K~(q)|u^_q|^2: the energy of a displacement without the q = 0
+  // term, which depends on the K~(0) convention.
+  double elastic_energy(const double *displacement) const;
 
   // u = K^-1 p and p = K u on the grid.
   void displacement_from_pressure(const double *pressure, double *displacement) const;

@@ -2,9 +2,9 @@
 // operator is diagonal), the transforms into it and back, the operator K and its inverse as
 // arrays over that space, and the observables that depend only on elasticity.
 //
-// A periodic half-space works on the grid's own half spectrum; a non-periodic one will work
-// on a zero-padded grid of twice the size, with transforms that pad and crop. Formulations see
-// only this interface.
+// A periodic half-space works on the grid's own half spectrum; a free (non-periodic) one on
+// the half spectrum of a zero-padded grid of twice the size in each direction, with
+// transforms that pad and crop. Formulations see only this interface.
 #pragma once
 
 #include <cstdint>
@@ -15,7 +15,7 @@
 
 namespace asp {
 
-enum class SubstrateKind { periodic };
+enum class SubstrateKind { periodic, free };
 const char *substrate_name(SubstrateKind kind);
 
 class Substrate {
@@ -26,28 +26,40 @@ class Substrate {
   virtual double contact_modulus() const = 0;
 
   // The spectral space: its layout, and transforms from a field on the grid into it and back
-  // (unnormalised; backward destroys the spectrum it reads). Buffers come from make_spectrum.
+  // (unnormalised: backward(forward(f)) = transform_points() f; backward destroys the
+  // spectrum it reads). Buffers come from make_spectrum.
   virtual const SpectralLayout &layout() const = 0;
   virtual Spectrum make_spectrum() const = 0;
   virtual void forward(const double *field, Complex *spectrum) const = 0;
   virtual void backward(Complex *spectrum, double *field) const = 0;
+  virtual double transform_points() const = 0;
 
   // K and its inverse on the spectral space, with the transform's normalisation folded in:
   // backward(compliance * forward(p)) = K^-1 p and backward(stiffness * forward(u)) = K u.
+  // A substrate whose K is not diagonal there throws Error(unsupported) from
+  // normalised_stiffness (the free half-space: see free_halfspace.hpp).
   virtual const Field &normalised_compliance() const = 0;
   virtual const Field &normalised_stiffness() const = 0;
-  // The diagonal of K in real space: the pressure that a unit displacement of one pixel alone
-  // needs. It turns gap residuals into pressures in the error measure.
+  // The stiffness scale of one pixel, which turns gap residuals into pressures in the error
+  // measure and sets the units of a solve (each substrate says which scale it uses).
   virtual double pixel_stiffness() const = 0;
 
-  // The stiffness of the mean (q = 0) displacement mode, and setting it (see
-  // asp_system_set_k0).
+  // The mean (q = 0) displacement mode. A periodic substrate has no stiffness there of its
+  // own: K~(0) is a convention that links mean pressure and mean displacement, and the user
+  // may set it (asp_system_set_k0). A free substrate's mean displacement follows from its
+  // elasticity, with nothing to choose: has_k0() is false and k0() and set_k0() throw
+  // Error(unsupported).
+  virtual bool has_k0() const = 0;
   virtual double k0() const = 0;
   virtual void set_k0(double k0) = 0;
+  // The mean pressure over the mean displacement that a uniform pressure on the whole grid
+  // makes: K~(0) on a periodic substrate. It links the scales of load and penetration.
+  virtual double uniform_pressure_stiffness() const = 0;
 
-  // (A/2) sum over q != 0 of K~(q)|u^_q|^2: the energy of the deformation without the q = 0
-  // term, which depends on the K~(0) convention.
-  virtual double elastic_energy(const double *displacement) const = 0;
+  // The elastic energy reported for a pressure on the grid: for a periodic substrate the
+  // (A/2) sum over q != 0 of K~(q)|u^_q|^2 of u = K^-1 p, without the q = 0 term that
+  // depends on the K~(0) convention; for a free one (a/2) sum p.K^-1 p, all of it.
+  virtual double elastic_energy_of_pressure(const double *pressure) const = 0;
 };
 
 }  // namespace asp

@@ -122,6 +122,30 @@ SurfaceStatistics surface_statistics(const Grid &grid, const double *heights) {
   return s;
 }
 
+double rms_slope_within_box(const Grid &grid, const double *heights) {
+  // Differences divided by 2^e (e above the largest height) are at most 2 in magnitude, so
+  // their squares cannot overflow; the scale comes back exactly in ldexp.
+  const std::int64_t nx = grid.nx(), ny = grid.ny(), n = grid.n_pixels();
+  const int exponent = exponent_above(
+      loops::maximum(grid.reductions(), n, [&](std::int64_t i) { return std::fabs(heights[i]); }));
+  const double factor = std::ldexp(1.0, -exponent);
+  // Sums of squared differences along x and along y, each over the pairs inside the box.
+  const auto sums = loops::sums<2>(grid.reductions(), n, [&](std::int64_t k, double *sum) {
+    const std::int64_t i = k % nx, j = k / nx;
+    const double here = heights[k] * factor;
+    const double along_x = i + 1 < nx ? heights[k + 1] * factor - here : 0.0;
+    const double along_y = j + 1 < ny ? heights[k + nx] * factor - here : 0.0;
+    sum[0] += along_x * along_x;
+    sum[1] += along_y * along_y;
+  });
+  const double dx = grid.lx() / static_cast<double>(nx), dy = grid.ly() / static_cast<double>(ny);
+  const double pairs_x = static_cast<double>((nx - 1) * ny);
+  const double pairs_y = static_cast<double>(nx * (ny - 1));
+  const double slope_x = pairs_x > 0.0 ? std::sqrt(sums[0] / pairs_x) / dx : 0.0;
+  const double slope_y = pairs_y > 0.0 ? std::sqrt(sums[1] / pairs_y) / dy : 0.0;
+  return std::ldexp(std::hypot(slope_x, slope_y), exponent);
+}
+
 void surface_statistics(const Grid &grid, const double *heights, double *rms_height,
                         double *rms_slope, double *rms_curvature) {
   const SurfaceStatistics s = surface_statistics(grid, heights);

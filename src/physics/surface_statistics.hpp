@@ -18,6 +18,12 @@ struct SurfaceStatistics {
 // (never NaN); rms_height never overflows.
 SurfaceStatistics surface_statistics(const Grid &grid, const double *heights);
 
+// The rms slope sqrt(<|grad h|^2>) from the differences between neighbouring pixels inside
+// the box, without the pair across its edges: the slope of a surface that is not periodic
+// (under a free substrate), whose spectral slope would count the step between its opposite
+// edges. Any finite heights with a finite range; +inf if the slope overflows a double.
+double rms_slope_within_box(const Grid &grid, const double *heights);
+
 // The statistics whose pointers are not null, written only if all of them are finite;
 // otherwise throws Error(invalid_argument) naming 'heights' and the statistic, and writes
 // nothing. What asp_topography_statistics does.

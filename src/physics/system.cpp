@@ -7,16 +7,25 @@
 #include "core/checks.hpp"
 #include "core/error.hpp"
 #include "core/loops.hpp"
+#include "physics/free_halfspace.hpp"
 #include "physics/periodic_halfspace.hpp"
 #include "physics/surface_statistics.hpp"
 
 namespace asp {
 
-System::System(std::shared_ptr<const Grid> grid, double contact_modulus)
+namespace {
+std::unique_ptr<Substrate> make_substrate(SubstrateKind kind, const Grid &grid,
+                                          double contact_modulus) {
+  if (kind == SubstrateKind::free) return std::make_unique<FreeHalfSpace>(grid, contact_modulus);
+  return std::make_unique<PeriodicHalfSpace>(grid, contact_modulus);
+}
+}  // namespace
+
+System::System(std::shared_ptr<const Grid> grid, double contact_modulus, SubstrateKind substrate)
     : grid_(std::move(grid)),
       heights_(grid_->make_field()),
       state_{grid_->make_field(), grid_->make_field(), 0.0},
-      substrate_(new PeriodicHalfSpace(*grid_, contact_modulus)),
+      substrate_(make_substrate(substrate, *grid_, contact_modulus)),
       interaction_(new HardWall()) {
   last_reference_pressure_ = reference_pressure(0.0);
   reset_state();
@@ -31,8 +40,11 @@ void System::set_topography(const double *heights) {
     throw Error(Status::invalid_argument,
                 "array 'heights' spans " + format_number(bottom) + " to " + format_number(top) +
                     "; the range max - min must be a finite double");
-  const double slope_pressure =
-      0.5 * substrate_->contact_modulus() * surface_statistics(*grid_, heights).rms_slope;
+  // A free substrate's heights need not be periodic: their slope is taken inside the box.
+  const double rms_slope = substrate_->kind() == SubstrateKind::free
+                               ? rms_slope_within_box(*grid_, heights)
+                               : surface_statistics(*grid_, heights).rms_slope;
+  const double slope_pressure = 0.5 * substrate_->contact_modulus() * rms_slope;
   if (!std::isfinite(slope_pressure))
     throw Error(Status::invalid_argument,
                 "array 'heights': the pressure scale E* h'_rms/2 of this surface is not a "
@@ -130,6 +142,7 @@ void System::set_adhesion(double work, double range) {
 }
 
 void System::set_k0(double k0) {
+  if (!substrate_->has_k0()) substrate_->set_k0(k0);  // refuses, naming the substrate
   require_positive(k0, "k0");
   const double p_mean = mean_pressure();
   const double shift = p_mean / k0 - p_mean / substrate_->k0();
@@ -142,26 +155,11 @@ void System::set_k0(double k0) {
 }
 
 double System::elastic_energy() const {
-  // From the pressure, u = K^-1 p, rather than from g + h - max h + delta: the latter cancels
-  // the heights, and its round-off, squared in the energy, can dwarf small deformations of
-  // tall surfaces. The q = 0 mode is left out either way.
-  const std::int64_t n = grid_->n_pixels();
-  const double *p = state_.pressure.data();
-  if (loops::maximum(grid_->reductions(), n, [&](std::int64_t i) { return std::fabs(p[i]); }) ==
-      0.0)
-    return 0.0;
-  Spectrum s = substrate_->make_spectrum();
-  substrate_->forward(p, s.data());
-  const Field &compliance = substrate_->normalised_compliance();
-  substrate_->layout().for_each([&](std::int64_t k, double q, double) {
-    s[k] = q > 0.0 ? s[k] * compliance[k] : Complex(0.0);
-  });
-  Field u = grid_->make_field();
-  substrate_->backward(s.data(), u.data());
-  return substrate_->elastic_energy(u.data());
+  return substrate_->elastic_energy_of_pressure(state_.pressure.data());
 }
 
 double System::mean_mode_energy() const {
+  if (!substrate_->has_k0()) return 0.0;
   const double p_mean = mean_pressure();
   return 0.5 * grid_->area() * p_mean * (p_mean / substrate_->k0());
 }

@@ -21,9 +21,11 @@ struct ContactState {
 
 class System {
  public:
-  // A periodic half-space with a non-adhesive hard wall and a flat topography. The system
-  // holds a reference to the grid, which therefore outlives every system made on it.
-  System(std::shared_ptr<const Grid> grid, double contact_modulus);
+  // A half-space of the given kind (periodic, or free on a 2D grid: see free_halfspace.hpp)
+  // with a non-adhesive hard wall and a flat topography. The system holds a reference to the
+  // grid, which therefore outlives every system made on it.
+  System(std::shared_ptr<const Grid> grid, double contact_modulus,
+         SubstrateKind substrate = SubstrateKind::periodic);
 
   const Grid &grid() const { return *grid_; }
   const Substrate &substrate() const { return *substrate_; }
@@ -37,7 +39,8 @@ class System {
   void set_adhesion(double work, double range);
 
   // Changes K~(0) keeping the pressure and the gap: only the rigid-body penetration moves, by
-  // pbar (1/K~(0)new - 1/K~(0)old), so that the state stays an equilibrium.
+  // pbar (1/K~(0)new - 1/K~(0)old), so that the state stays an equilibrium. Throws
+  // Error(unsupported) naming 'system' on a substrate without K~(0) (the free half-space).
   void set_k0(double k0);
 
   // Copies the heights (finite, with a finite range max - min) and resets the state.
@@ -72,8 +75,12 @@ class System {
   double mean_pressure() const;
   double mean_gap() const;
   double total_force() const;
-  double elastic_energy() const;    // q != 0 modes of K^-1 p, see Substrate::elastic_energy
-  double mean_mode_energy() const;  // A pbar^2/(2 K~(0))
+  // See Substrate::elastic_energy_of_pressure: without the q = 0 term on a periodic
+  // substrate, all of it on a free one.
+  double elastic_energy() const;
+  // A pbar^2/(2 K~(0)) on a periodic substrate; 0 on a free one, whose elastic energy is
+  // whole.
+  double mean_mode_energy() const;
   void displacement(double *out) const;
 
  private:

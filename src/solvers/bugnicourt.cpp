@@ -266,6 +266,8 @@ void bugnicourt_nonquadratic(Formulation &f, Monitor &monitor) {
 
 bool on_the_gap(const OptionValues &options) { return options.text("variable") == "gap"; }
 
+// The gap formulation needs the stiffness K on the substrate's spectral space, which a free
+// half-space does not have (the inverse of its compliance on the box is not a convolution).
 Offer offer_for(const OptionValues &options) {
   if (on_the_gap(options))
     return {{Control::mean_gap, Control::penetration},
@@ -273,7 +275,7 @@ Offer offer_for(const OptionValues &options) {
             {InteractionKind::hard_wall, InteractionKind::adhesive_hard_wall},
             "variable = gap"};
   return {{Control::mean_pressure, Control::penetration},
-          {SubstrateKind::periodic},
+          {SubstrateKind::periodic, SubstrateKind::free},
           {InteractionKind::hard_wall},
           "variable = pressure"};
 }
@@ -308,12 +310,13 @@ AlgorithmSpec bugnicourt_algorithm() {
       "energy; with or without adhesion)";
   spec.controls = {Control::mean_pressure, Control::mean_gap, Control::penetration};
   spec.offer_for = offer_for;
-  spec.substrates = {SubstrateKind::periodic};
+  spec.substrates = {SubstrateKind::periodic, SubstrateKind::free};
   spec.interactions = {InteractionKind::hard_wall, InteractionKind::adhesive_hard_wall};
   spec.options = {{"variable", OptionType::choice, 0.0, 0.0, 0.0, false, {"pressure", "gap"},
                    "the unknown: pressure (the dual problem; mean-pressure or penetration "
-                   "control; no adhesion) or gap (the primal; mean-gap or penetration control; "
-                   "with or without adhesion)"}};
+                   "control; no adhesion; periodic or free substrate) or gap (the primal; "
+                   "mean-gap or penetration control; with or without adhesion; periodic "
+                   "substrate only)"}};
   spec.run = run;
   return spec;
 }

@@ -20,7 +20,6 @@ DualFormulation::DualFormulation(System &system, Control control, double value,
     : ScaledFormulation(system, control, value),
       compliance_(system.substrate().normalised_compliance()) {
   compliance_factor_ = substrate_.pixel_stiffness();
-  const double n = static_cast<double>(n_);
 
   // Work arrays before anything changes, so that running out of memory changes nothing.
   spectrum_ = substrate_.make_spectrum();
@@ -30,9 +29,11 @@ DualFormulation::DualFormulation(System &system, Control control, double value,
     pressure_spectrum_ = substrate_.make_spectrum();
   }
   // The gap array holds the scaled heights for their transform; every way out of a solve
-  // computes the gap again (evaluate_gap, finish).
+  // computes the gap again (evaluate_gap, finish). The transform's own size (the padded grid
+  // of a free substrate) normalises them.
   double *w = state_.gap.data();
-  loops::for_each(n_, [&](std::int64_t i) { w[i] = scaled_height(i) / n; });
+  const double points = substrate_.transform_points();
+  loops::for_each(n_, [&](std::int64_t i) { w[i] = scaled_height(i) / points; });
   substrate_.forward(w, height_spectrum_.data());
   counters_.transforms += 1;
   load_state();

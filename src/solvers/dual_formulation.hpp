@@ -11,6 +11,11 @@
 // projected gap violation. The constructor refuses scenes whose scaled numbers or whose results
 // doubles cannot hold.
 //
+// It works on any substrate with a compliance: the transforms, the compliance and the
+// Parseval sums (p.K^-1 p and t.K^-1 t from one spectrum) are the substrate's. On a free
+// substrate's padded grid the Parseval sums still hold, because the pressure and the search
+// direction are zero outside the box.
+//
 // Besides the generic Formulation interface it offers the steps of Polonsky & Keer's
 // algorithm, fused into as few passes over memory as the algorithm allows; during such a solve
 // the system's pressure and gap arrays hold the scaled iterate.
@@ -94,7 +99,7 @@ class DualFormulation final : public ScaledFormulation {
   Field direction_;         // t
   Spectrum spectrum_;       // work; holds the spectrum of t between curvature() and the next gap
   Spectrum pressure_spectrum_;  // the spectrum of the pressure array
-  Spectrum height_spectrum_;  // FFT of the scaled (h - max h), divided by N
+  Spectrum height_spectrum_;  // FFT of the scaled (h - max h), over the transform's points
   const Field &compliance_;
 
   // The arrays hold p/scale and g + shift: rescaling and centring are carried as numbers and

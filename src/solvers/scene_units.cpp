@@ -20,7 +20,9 @@ SceneUnits scene_units(const System &system, Control control, double value) {
   const bool load = control == Control::mean_pressure;
   const double k = substrate.pixel_stiffness();
   const ExponentialAdhesion *adhesion = exponential_adhesion(system.interaction());
-  double control_scale = load ? std::fabs(value) : substrate.k0() * std::fabs(value);
+  // The stiffness of the mean displacement: K~(0) on a periodic substrate.
+  const double k_mean = substrate.uniform_pressure_stiffness();
+  double control_scale = load ? std::fabs(value) : k_mean * std::fabs(value);
   if (!std::isfinite(control_scale)) control_scale = 0.0;
   const double tensile_stress = adhesion != nullptr ? adhesion->work() / adhesion->range() : 0.0;
   if (tensile_stress > control_scale) control_scale = tensile_stress;
@@ -35,7 +37,7 @@ SceneUnits scene_units(const System &system, Control control, double value) {
   const double range = system.height_range() / units.length;
   // Under load control the mean displacement pbar/K~(0) joins the penetration; a soft mean
   // mode (small K~(0)) makes it much larger than the pressure scale.
-  const double mean_displacement = load ? std::fabs(units.target) * (k / substrate.k0()) : 0.0;
+  const double mean_displacement = load ? std::fabs(units.target) * (k / k_mean) : 0.0;
   if (!normal(units.pressure) || !normal(units.length))
     throw Error(Status::invalid_argument,
                 "the scene's pressure scale " + format_number(units.pressure) +
@@ -74,8 +76,9 @@ SceneUnits scene_units(const System &system, Control control, double value) {
       !representable(units.energy * n * units.adhesion_work))
     throw Error(Status::invalid_argument,
                 "argument 'value' is " + format_number(value) + ": with heights spanning " +
-                    format_number(system.height_range()) + " and K~(0) = " +
-                    format_number(substrate.k0()) +
+                    format_number(system.height_range()) +
+                    " and a stiffness under uniform pressure (K~(0) if periodic) of " +
+                    format_number(k_mean) +
                     " the pressures, gaps, displacements or energies of this solve would "
                     "overflow a double; rescale the units");
   return units;

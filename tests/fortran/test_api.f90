@@ -1,7 +1,8 @@
 ! The public interface through the Fortran module: a Hertzian sphere solved with "pk", options
 ! set by name (and refused by name), the history, a progress callback written in Fortran that
 ! cancels the solve, a solve to convergence, the texts that come back in buffers, FFTW wisdom,
-! and the scalar results. Prints every failed check and exits non-zero if there was one.
+! the scalar results, and a free (non-periodic) half-space. Prints every failed check and exits
+! non-zero if there was one.
 module api_checks
   use, intrinsic :: iso_c_binding, only: c_int, c_int64_t, c_double, c_ptr, c_f_pointer
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -78,7 +79,7 @@ program test_api
   real(c_double), parameter :: tolerance = 1d-10
   character(len=*), parameter :: wisdom_file = 'fortran_api.wisdom'
 
-  type(c_ptr) :: grid, system, solver, no_solver, adhesive_solver
+  type(c_ptr) :: grid, system, solver, no_solver, adhesive_solver, free_system, line, no_system
   type(progress_counter), target :: counter
   real(c_double), allocatable :: heights(:, :), pressure(:, :), column(:)
   real(c_double), allocatable :: seconds(:), errors(:), evaluations(:), transforms(:)
@@ -370,6 +371,34 @@ program test_api
               'the message names the path: ' // asp_last_error_text())
   open (newunit=unit, file=wisdom_file, status='old', iostat=status)
   if (status == 0) close (unit, status='delete')
+
+  ! ---- a free half-space: the same sphere without periodic images ----
+  call expect_status(asp_system_create_free(grid, modulus, free_system), ASP_OK, &
+                     'asp_system_create_free')
+  call expect_status(asp_system_set_topography(free_system, heights, n * n), ASP_OK, &
+                     'asp_system_set_topography on a free system')
+  call expect_status(asp_solver_solve(solver, free_system, ASP_CONTROL_MEAN_PRESSURE, &
+                     mean_pressure), ASP_OK, 'pk on a free system')
+  call expect_status(asp_solver_converged(solver, converged), ASP_OK, 'asp_solver_converged')
+  call expect(converged == 1, 'pk converges on a free system')
+  call expect_status(asp_system_get(free_system, ASP_ELASTIC_ENERGY, scalar), ASP_OK, &
+                     'asp_system_get(ELASTIC_ENERGY) of a free system')
+  call expect(scalar > 0, 'a free substrate stores elastic energy')
+  call expect_status(asp_system_get(free_system, ASP_MEAN_MODE_ENERGY, scalar), ASP_OK, &
+                     'asp_system_get(MEAN_MODE_ENERGY) of a free system')
+  call expect(scalar == 0, 'a free system has no mean-mode energy')
+  call expect_status(asp_system_set_k0(free_system, 1d0), ASP_ERR_UNSUPPORTED, &
+                     'asp_system_set_k0 on a free system')
+  call expect(index(asp_last_error_text(), 'free half-space') > 0, &
+              'the message says why: ' // asp_last_error_text())
+  call expect_status(asp_grid_create_1d(n, box, line), ASP_OK, 'asp_grid_create_1d')
+  call expect_status(asp_system_create_free(line, modulus, no_system), ASP_ERR_UNSUPPORTED, &
+                     'asp_system_create_free on a 1D grid')
+  call expect(.not. c_associated(no_system), 'a refused system is NULL')
+  call expect(index(asp_last_error_text(), "'grid'") > 0, &
+              'the message names the grid: ' // asp_last_error_text())
+  call asp_grid_destroy(line)
+  call asp_system_destroy(free_system)
 
   call asp_solver_destroy(solver)
   call asp_system_destroy(system)

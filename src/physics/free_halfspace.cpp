@@ -1,0 +1,225 @@
+#include "physics/free_halfspace.hpp"
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <vector>
+
+#include "core/checks.hpp"
+#include "core/error.hpp"
+#include "core/loops.hpp"
+
+namespace asp {
+
+namespace {
+constexpr double pi = 3.14159265358979323846;
+
+bool normal(double v) { return std::isfinite(v) && v >= DBL_MIN; }
+
+// The integral of 1/r over the rectangle [0, x] x [0, y] (signed by the signs of x and y) up
+// to terms in one variable only, which cancel between the four corners of a rectangle:
+// x asinh(y/|x|) + y asinh(x/|y|). With x ln(y + r) = x ln|x| + x asinh(y/|x|), this is
+// Johnson's eq. 3.25 in a form without the cancellation of y + r for y < 0. Corners of
+// pixels lie at half-integer offsets, never on an axis.
+double corner_integral(double x, double y) {
+  return x * std::asinh(y / std::fabs(x)) + y * std::asinh(x / std::fabs(y));
+}
+
+// The integral of 1/r over the pixel at offset (i, j) from the point, in units of the pixel
+// width dx: coordinates in units of dx, aspect = dy/dx.
+double pixel_integral(double i, double j, double aspect) {
+  const double x1 = i - 0.5, x2 = i + 0.5, y1 = aspect * (j - 0.5), y2 = aspect * (j + 0.5);
+  return corner_integral(x2, y2) - corner_integral(x1, y2) - corner_integral(x2, y1) +
+         corner_integral(x1, y1);
+}
+}  // namespace
+
+FreeHalfSpace::FreeHalfSpace(const Grid &grid, double contact_modulus)
+    : grid_(grid),
+      nx_(grid.nx()),
+      ny_(grid.ny()),
+      padded_nx_(2 * grid.nx()),
+      padded_ny_(2 * grid.ny()),
+      layout_(Packing::half_spectrum, 2 * grid.nx(), 2 * grid.ny(), 2.0 * grid.lx(),
+              2.0 * grid.ly()),
+      modulus_(contact_modulus) {
+  if (grid.dimension() != 2)
+    throw Error(Status::unsupported,
+                "argument 'grid' is 1D: a free (non-periodic) half-space needs a 2D grid. "
+                "Under plane strain the displacement of a loaded free half-space grows like "
+                "the logarithm of the distance and is defined only relative to a reference "
+                "point, so a 1D free substrate has no unique force-penetration relation; use a "
+                "periodic system in 1D");
+  require_positive(contact_modulus, "contact_modulus");
+
+  // The largest coefficient (a pixel on itself), the smallest (the farthest offset of the
+  // padded grid), their sum over the padded grid (at most 4N times the largest) and the
+  // stiffness scales that follow must be finite, normal doubles.
+  const double dx = grid.lx() / static_cast<double>(nx_);
+  const double aspect = (grid.ly() / static_cast<double>(ny_)) / dx;
+  const double factor = dx / (pi * modulus_);
+  const double self = factor * pixel_integral(0.0, 0.0, aspect);
+  const double farthest = factor * pixel_integral(static_cast<double>(nx_),
+                                                  static_cast<double>(ny_), aspect);
+  const double n_padded = transform_points();
+  pixel_stiffness_ = 1.0 / self;
+  if (!normal(self) || !normal(farthest) || !normal(pixel_stiffness_) ||
+      !normal(n_padded * self) || !normal(1.0 / (n_padded * self)))
+    throw Error(Status::invalid_argument,
+                "argument 'contact_modulus' is " + format_number(contact_modulus) +
+                    ": on this grid the influence coefficients of a pixel range from " +
+                    format_number(farthest) + " to " + format_number(self) +
+                    ", which doubles cannot hold with their inverses and sums; rescale the "
+                    "units");
+  // The padded work field, before anything is planned or transformed: a box too large for
+  // memory fails here, when the system is made.
+  padded_ = Field(static_cast<std::size_t>(padded_nx_ * padded_ny_), 0.0);
+}
+
+Spectrum FreeHalfSpace::make_spectrum() const {
+  return Spectrum(static_cast<std::size_t>(layout_.size()));
+}
+
+void FreeHalfSpace::forward(const double *field, Complex *spectrum) const {
+  // The box's rows into the padded field; the rest must be zero.
+  double *pad = padded_.data();
+  const std::int64_t width = padded_nx_;
+  for (std::int64_t j = 0; j < ny_; ++j) {
+    std::copy(field + nx_ * j, field + nx_ * (j + 1), pad + width * j);
+    if (!padding_is_zero_) std::fill(pad + width * j + nx_, pad + width * (j + 1), 0.0);
+  }
+  if (!padding_is_zero_) std::fill(pad + width * ny_, pad + width * padded_ny_, 0.0);
+  padding_is_zero_ = true;
+  grid_.real_fft(padded_nx_, padded_ny_).forward(pad, spectrum);
+}
+
+void FreeHalfSpace::backward(Complex *spectrum, double *field) const {
+  double *pad = padded_.data();
+  grid_.real_fft(padded_nx_, padded_ny_).backward(spectrum, pad);
+  padding_is_zero_ = false;
+  const std::int64_t width = padded_nx_;
+  for (std::int64_t j = 0; j < ny_; ++j)
+    std::copy(pad + width * j, pad + width * j + nx_, field + nx_ * j);
+}
+
+void FreeHalfSpace::make_kernel() const {
+  // C at offset (i, j), i in [0, nx], j in [0, ny], from the corner integrals of two rows of
+  // corners at a time: row l holds F((k + 1/2) dx, (l + 1/2) dy) for k in [0, nx], and
+  // F(-x, y) = F(x, -y) = -F(x, y) gives the corners at -1/2. The kernel is even in each
+  // axis; offset i sits at index i and 2nx - i of the padded grid (the offset nx, which no
+  // two pixels of the box have, at nx), so that its spectrum is real.
+  const double dx = grid_.lx() / static_cast<double>(nx_);
+  const double aspect = (grid_.ly() / static_cast<double>(ny_)) / dx;
+  const double factor = dx / (pi * modulus_);
+  const auto columns = static_cast<std::size_t>(nx_ + 1);
+  // d_l(i) = F(x_{i+1/2}, y_{l+1/2}) - F(x_{i-1/2}, y_{l+1/2}); C(i, j) = d_j(i) - d_{j-1}(i).
+  std::vector<double> below(columns), above(columns);
+  const auto differences = [&](std::int64_t l, std::vector<double> &d) {
+    const double y = aspect * (static_cast<double>(l) + 0.5);
+    double left = -corner_integral(0.5, y);
+    for (std::size_t k = 0; k < columns; ++k) {
+      const double right = corner_integral(static_cast<double>(k) + 0.5, y);
+      d[k] = right - left;
+      left = right;
+    }
+  };
+  differences(0, above);
+  for (std::size_t k = 0; k < columns; ++k) below[k] = -above[k];
+
+  // The mean displacement of a unit pressure on the box: sum over offsets of C times the
+  // number of pixel pairs at that offset, (nx - |i|)(ny - |j|), over N.
+  double *pad = padded_.data();
+  double displacement_sum = 0.0;
+  for (std::int64_t j = 0; j <= ny_; ++j) {
+    if (j > 0) {
+      std::swap(below, above);
+      differences(j, above);
+    }
+    const std::int64_t rows[2] = {j, (padded_ny_ - j) % padded_ny_};
+    const double pairs_y = j == ny_ ? 0.0 : (j == 0 ? 1.0 : 2.0) * static_cast<double>(ny_ - j);
+    double row_sum = 0.0;
+    for (std::int64_t i = 0; i <= nx_; ++i) {
+      const double c = factor * (above[static_cast<std::size_t>(i)] -
+                                 below[static_cast<std::size_t>(i)]);
+      const std::int64_t column[2] = {i, (padded_nx_ - i) % padded_nx_};
+      for (std::int64_t r : rows)
+        for (std::int64_t s : column) pad[s + padded_nx_ * r] = c;
+      const double pairs_x =
+          i == nx_ ? 0.0 : (i == 0 ? 1.0 : 2.0) * static_cast<double>(nx_ - i);
+      row_sum += pairs_x * c;
+    }
+    displacement_sum += pairs_y * row_sum;
+  }
+  padding_is_zero_ = false;
+  const double n = static_cast<double>(grid_.n_pixels());
+  const double mean_displacement = displacement_sum / n;
+
+  Spectrum s = make_spectrum();
+  grid_.real_fft(padded_nx_, padded_ny_).forward(pad, s.data());
+  Field c(static_cast<std::size_t>(layout_.size()));
+  const double inverse_points = 1.0 / transform_points();
+  loops::for_each(layout_.size(), [&](std::int64_t k) { c[k] = s[k].real() * inverse_points; });
+  compliance_ = std::move(c);
+  uniform_pressure_stiffness_ = 1.0 / mean_displacement;
+}
+
+const Field &FreeHalfSpace::normalised_compliance() const {
+  if (compliance_.empty()) make_kernel();
+  return compliance_;
+}
+
+const Field &FreeHalfSpace::normalised_stiffness() const {
+  throw Error(Status::unsupported,
+              "a free half-space has no stiffness on its spectral space: the inverse of its "
+              "compliance restricted to the box is not a convolution (the gap formulation "
+              "is not offered on it)");
+}
+
+double FreeHalfSpace::uniform_pressure_stiffness() const {
+  if (compliance_.empty()) make_kernel();
+  return uniform_pressure_stiffness_;
+}
+
+namespace {
+[[noreturn]] void refuse_k0() {
+  throw Error(Status::unsupported,
+              "argument 'system' is on a free half-space, which has no K~(0): there is no "
+              "q = 0 ambiguity, the mean displacement follows from the elasticity");
+}
+}  // namespace
+
+double FreeHalfSpace::k0() const { refuse_k0(); }
+
+void FreeHalfSpace::set_k0(double) { refuse_k0(); }
+
+void FreeHalfSpace::displacement_from_pressure(const double *pressure,
+                                               double *displacement) const {
+  const Field &compliance = normalised_compliance();
+  Spectrum s = make_spectrum();
+  forward(pressure, s.data());
+  Complex *spectrum = s.data();
+  const double *c = compliance.data();
+  loops::for_each(layout_.size(), [&](std::int64_t k) { spectrum[k] *= c[k]; });
+  backward(s.data(), displacement);
+}
+
+double FreeHalfSpace::elastic_energy_of_pressure(const double *pressure) const {
+  // (a/2) sum p.C p = (a/2) sum over the padded spectrum of C~|P|^2 (Parseval; the padded
+  // pressure is zero outside the box). The pressure is divided by its largest magnitude
+  // first, so that squares cannot overflow for any representable field.
+  const std::int64_t n = grid_.n_pixels();
+  const double largest = loops::maximum(grid_.reductions(), n,
+                                        [&](std::int64_t i) { return std::fabs(pressure[i]); });
+  if (!(largest > 0.0)) return 0.0;
+  const Field &compliance = normalised_compliance();
+  Field p = grid_.make_field();
+  loops::for_each(n, [&](std::int64_t i) { p[i] = pressure[i] / largest; });
+  Spectrum s = make_spectrum();
+  forward(p.data(), s.data());
+  const double *c = compliance.data();
+  double sum = layout_.weighted_sum([&](std::int64_t k) { return c[k] * std::norm(s[k]); });
+  grid_.reductions().combine_sums(&sum, 1);
+  return 0.5 * grid_.pixel_area() * sum * largest * largest;
+}
+
+}  // namespace asp
