@@ -102,6 +102,35 @@ void FreeHalfSpace::backward(Complex *spectrum, double *field) const {
     std::copy(pad + width * j, pad + width * j + nx_, field + nx_ * j);
 }
 
+void FreeHalfSpace::surface_forward(const double *surface_field, Complex *spectrum) const {
+  // Box rows, then the rest of those rows, then the rows below, into the padded layout.
+  double *pad = padded_.data();
+  const std::int64_t width = padded_nx_, box = nx_ * ny_;
+  const double *beside = surface_field + box;
+  const double *below = beside + box;
+  for (std::int64_t j = 0; j < ny_; ++j) {
+    std::copy(surface_field + nx_ * j, surface_field + nx_ * (j + 1), pad + width * j);
+    std::copy(beside + nx_ * j, beside + nx_ * (j + 1), pad + width * j + nx_);
+  }
+  std::copy(below, below + width * ny_, pad + width * ny_);
+  padding_is_zero_ = false;
+  grid_.real_fft(padded_nx_, padded_ny_).forward(pad, spectrum);
+}
+
+void FreeHalfSpace::surface_backward(Complex *spectrum, double *surface_field) const {
+  double *pad = padded_.data();
+  grid_.real_fft(padded_nx_, padded_ny_).backward(spectrum, pad);
+  padding_is_zero_ = false;
+  const std::int64_t width = padded_nx_, box = nx_ * ny_;
+  double *beside = surface_field + box;
+  double *below = beside + box;
+  for (std::int64_t j = 0; j < ny_; ++j) {
+    std::copy(pad + width * j, pad + width * j + nx_, surface_field + nx_ * j);
+    std::copy(pad + width * j + nx_, pad + width * (j + 1), beside + nx_ * j);
+  }
+  std::copy(pad + width * ny_, pad + width * padded_ny_, below);
+}
+
 void FreeHalfSpace::make_kernel() const {
   // C at offset (i, j), i in [0, nx], j in [0, ny], from the corner integrals of two rows of
   // corners at a time: row l holds F((k + 1/2) dx, (l + 1/2) dy) for k in [0, nx], and
@@ -169,10 +198,25 @@ const Field &FreeHalfSpace::normalised_compliance() const {
 }
 
 const Field &FreeHalfSpace::normalised_stiffness() const {
-  throw Error(Status::unsupported,
-              "a free half-space has no stiffness on its spectral space: the inverse of its "
-              "compliance restricted to the box is not a convolution (the gap formulation "
-              "is not offered on it)");
+  if (stiffness_.empty()) {
+    // 1/C~ with the 1/N of the transform: 1/(N^2 c) for the normalised compliance c = C~/N.
+    // The padded kernel's spectrum is positive (it is that of 1/r smoothed over a pixel,
+    // wrapped), which the constructor of a primal formulation relies on; checked here.
+    const Field &c = normalised_compliance();
+    const double n = transform_points();
+    Field s(c.size());
+    bool positive = true;
+    for (std::size_t k = 0; k < c.size(); ++k) {
+      s[k] = 1.0 / (n * n * c[k]);
+      positive = positive && c[k] > 0.0 && std::isfinite(s[k]);
+    }
+    if (!positive)
+      throw Error(Status::internal,
+                  "the padded compliance of this free half-space has a spectral entry that is "
+                  "not positive, or whose inverse is not finite; its stiffness does not exist");
+    stiffness_ = std::move(s);
+  }
+  return stiffness_;
 }
 
 double FreeHalfSpace::uniform_pressure_stiffness() const {

@@ -14,9 +14,11 @@
 // on the box, exactly up to round-off.
 //
 // What it does not offer:
-//  - a stiffness on the spectral space: the inverse of C restricted to the box is not a
-//    convolution, so normalised_stiffness() throws Error(unsupported) and the primal (gap)
-//    formulations are not offered on it;
+//  - a stiffness of the box alone: the inverse of C restricted to the box is not a
+//    convolution. The stiffness it offers is that of the padded surface, the inverse of the
+//    padded compliance (whose spectrum is positive); a primal formulation minimises over the
+//    displacement of the whole padded surface, and where the pressure K u vanishes outside
+//    the box, u on the box is C times the pressure on the box;
 //  - K~(0): there is no q = 0 ambiguity; the mean displacement of a load follows from the
 //    elasticity (has_k0() is false). The stiffness under a uniform pressure on the box,
 //    mean pressure over the mean displacement it makes, takes K~(0)'s place as a scale;
@@ -29,7 +31,8 @@
 //
 // Memory: a padded work field (4 nx ny doubles, 32 bytes per pixel of the box), and on first
 // use the compliance ((nx + 1) 2ny doubles, 16 bytes per pixel); each spectrum from
-// make_spectrum holds (nx + 1) 2ny complex numbers, 32 bytes per pixel.
+// make_spectrum holds (nx + 1) 2ny complex numbers, 32 bytes per pixel; the stiffness, made
+// only for a primal formulation, 16 bytes per pixel.
 #pragma once
 
 #include "physics/substrate.hpp"
@@ -54,9 +57,14 @@ class FreeHalfSpace final : public Substrate {
   double transform_points() const override {
     return static_cast<double>(padded_nx_) * static_cast<double>(padded_ny_);
   }
+  // The padded grid: the box's pixels, then the rest of the padded rows next to the box
+  // (nx per row), then the padded rows below it (2nx per row).
+  std::int64_t surface_size() const override { return padded_nx_ * padded_ny_; }
+  void surface_forward(const double *surface_field, Complex *spectrum) const override;
+  void surface_backward(Complex *spectrum, double *surface_field) const override;
 
   const Field &normalised_compliance() const override;
-  // Throws Error(unsupported): see above.
+  // The padded surface's stiffness (above).
   const Field &normalised_stiffness() const override;
   // 1/C(0): the pressure that, on one pixel alone, displaces that pixel by one length unit.
   double pixel_stiffness() const override { return pixel_stiffness_; }
@@ -88,6 +96,7 @@ class FreeHalfSpace final : public Substrate {
   mutable Field padded_;
   mutable bool padding_is_zero_ = true;
   mutable Field compliance_;
+  mutable Field stiffness_;
   mutable double uniform_pressure_stiffness_ = 0.0;
 };
 

@@ -25,6 +25,14 @@ class PeriodicHalfSpace final : public Substrate {
   void forward(const double *field, Complex *spectrum) const override;
   void backward(Complex *spectrum, double *field) const override;
   double transform_points() const override { return static_cast<double>(grid_.n_pixels()); }
+  // The surface is the grid.
+  std::int64_t surface_size() const override { return grid_.n_pixels(); }
+  void surface_forward(const double *field, Complex *spectrum) const override {
+    forward(field, spectrum);
+  }
+  void surface_backward(Complex *spectrum, double *field) const override {
+    backward(spectrum, field);
+  }
 
   const Field &normalised_compliance() const override;
   const Field &normalised_stiffness() const override;

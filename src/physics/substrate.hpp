@@ -34,10 +34,20 @@ class Substrate {
   virtual void backward(Complex *spectrum, double *field) const = 0;
   virtual double transform_points() const = 0;
 
+  // The surface on which displacements live: the grid itself on a periodic substrate; on a
+  // free one the zero-padded grid, the box and the unloaded surface around it. A field over
+  // it holds the grid's pixels first, in the grid's order, then the points outside the box.
+  // A primal formulation's displacement lives there, so that the pressure can vanish outside
+  // the box. Transforms as above, between such fields and the same spectral space.
+  virtual std::int64_t surface_size() const = 0;
+  virtual void surface_forward(const double *surface_field, Complex *spectrum) const = 0;
+  virtual void surface_backward(Complex *spectrum, double *surface_field) const = 0;
+
   // K and its inverse on the spectral space, with the transform's normalisation folded in:
-  // backward(compliance * forward(p)) = K^-1 p and backward(stiffness * forward(u)) = K u.
-  // A substrate whose K is not diagonal there throws Error(unsupported) from
-  // normalised_stiffness (the free half-space: see free_halfspace.hpp).
+  // backward(compliance * forward(p)) = K^-1 p on the grid, and on the whole surface
+  // surface_backward(stiffness * surface_forward(u)) = K u. On a free substrate K is the
+  // inverse of the compliance of the padded surface: where K u vanishes outside the box,
+  // u on the box is the displacement that the pressure K u on the box makes.
   virtual const Field &normalised_compliance() const = 0;
   virtual const Field &normalised_stiffness() const = 0;
   // The stiffness scale of one pixel, which turns gap residuals into pressures in the error

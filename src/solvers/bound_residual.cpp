@@ -25,15 +25,17 @@ double mean_over_free(const Reductions &reductions, std::int64_t n, const double
   return sums[1] > 0.0 ? pivot + sums[0] / sums[1] : 0.0;
 }
 
-double bound_residual(const Reductions &reductions, std::int64_t n, const double *x,
-                      const double *gradient, double lower, bool mean_constrained) {
+double bound_residual(const Reductions &reductions, std::int64_t n, std::int64_t bounded,
+                      const double *x, const double *gradient, double lower,
+                      bool mean_constrained) {
   const double shift =
-      mean_constrained ? mean_over_free(reductions, n, x, gradient, lower) : 0.0;
+      mean_constrained ? mean_over_free(reductions, bounded, x, gradient, lower) : 0.0;
   // The residuals are also summed, only to notice NaN, which a maximum may drop.
   const auto r = loops::sums_and_max<1>(reductions, n, [&](std::int64_t i, double *sum,
                                                            double &max) {
-    const double g = gradient[i] - shift;
-    const double v = x[i] > lower ? std::fabs(g) : (g > 0.0 ? 0.0 : -g);
+    const bool on_bound = i < bounded && !(x[i] > lower);
+    const double g = gradient[i] - (i < bounded ? shift : 0.0);
+    const double v = on_bound ? (g > 0.0 ? 0.0 : -g) : std::fabs(g);
     max = max > v ? max : v;
     sum[0] += v;
   });

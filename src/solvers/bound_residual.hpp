@@ -16,8 +16,11 @@ namespace asp {
 double mean_over_free(const Reductions &reductions, std::int64_t n, const double *x,
                       const double *gradient, double lower);
 
-// NaN in the gradient is returned as NaN, so that the monitor sees it.
-double bound_residual(const Reductions &reductions, std::int64_t n, const double *x,
-                      const double *gradient, double lower, bool mean_constrained);
+// Over n unknowns of which the first `bounded` carry the bound and the mean constraint; the
+// others are free of both (their residual is |gradient|). NaN in the gradient is returned as
+// NaN, so that the monitor sees it.
+double bound_residual(const Reductions &reductions, std::int64_t n, std::int64_t bounded,
+                      const double *x, const double *gradient, double lower,
+                      bool mean_constrained);
 
 }  // namespace asp

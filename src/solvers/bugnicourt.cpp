@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "core/error.hpp"
 #include "core/loops.hpp"
 #include "solvers/bound_residual.hpp"
 #include "solvers/dual_formulation.hpp"
@@ -29,22 +30,35 @@ struct Move {
   bool cut;
 };
 
-// The passes over the unknowns that the algorithm's steps need; x >= lower is the bound. The
-// unknowns are pixels (real space), whose inner product is the plain sum.
+// The passes over the unknowns that the algorithm's steps need; x >= lower is the bound on
+// the first `bounded` unknowns, the others are free. The unknowns are pixels (real space),
+// whose inner product is the plain sum.
 class Steps {
  public:
   explicit Steps(Formulation &f)
-      : f_(f), n_(f.size()), lower_(f.lower_bound()), reductions_(f.reductions()) {}
+      : f_(f),
+        n_(f.size()),
+        bounded_(f.bounded_size()),
+        lower_(f.lower_bound()),
+        reductions_(f.reductions()) {
+    // The mean is restored by scaling every unknown, which keeps the followed gradient exact;
+    // it is the mean of the bounded ones that the constraint fixes.
+    if (f.constrains_mean() && bounded_ != n_)
+      throw Error(Status::internal,
+                  "bugnicourt: a mean constraint on some unknowns only is not supported");
+  }
 
   // x <- max(from + alpha d, lower), then the mean restored by a common factor (a uniform
   // iterate if nothing is left above the bound). from may be x.
   Move move(const double *from, double *x, const double *d, double alpha) const {
     const double lower = lower_;
+    const std::int64_t bounded = bounded_;
     const auto s = loops::sums<2>(reductions_, n_, [&](std::int64_t i, double *sum) {
       const double moved = from[i] + alpha * d[i];
-      x[i] = moved > lower ? moved : lower;
+      const bool cut = (i < bounded) & !(moved > lower);
+      x[i] = cut ? lower : moved;
       sum[0] += x[i];
-      sum[1] += moved < lower ? 1.0 : 0.0;
+      sum[1] += cut & (moved < lower) ? 1.0 : 0.0;
     });
     Move m{1.0, s[1] > 0.0};
     if (!f_.constrains_mean()) return m;
@@ -71,12 +85,13 @@ class Steps {
   void project_and_direct(const double *x, const double *g, const double *h, double curvature,
                           double *r, double *d) const {
     const double lower = lower_;
+    const std::int64_t bounded = bounded_;
     const bool mean = f_.constrains_mean();
     const double shift = mean ? mean_over_free(reductions_, n_, x, g, lower) : 0.0;
     const bool conjugate = curvature > 0.0;
     const auto s = loops::sums<4>(reductions_, n_, [&](std::int64_t i, double *sum) {
       const double ri = g[i] - shift;
-      const bool blocked = (x[i] <= lower) & (ri > 0.0);
+      const bool blocked = (i < bounded) & (x[i] <= lower) & (ri > 0.0);
       r[i] = blocked ? 0.0 : ri;
       const double nonzero = r[i] != 0.0 ? 1.0 : 0.0;
       sum[0] += r[i];
@@ -89,7 +104,7 @@ class Steps {
     loops::for_each(n_, [&](std::int64_t i) {
       const bool zero = r[i] == 0.0;
       r[i] = zero ? 0.0 : r[i] - again;
-      d[i] = (x[i] <= lower) & zero ? 0.0 : -r[i] + beta * d[i];
+      d[i] = (i < bounded) & (x[i] <= lower) & zero ? 0.0 : -r[i] + beta * d[i];
     });
   }
 
@@ -105,8 +120,9 @@ class Steps {
   // d <- -r + beta d where r is not zero by the bound rule, 0 there.
   void new_direction(const double *x, const double *r, double beta, double *d) const {
     const double lower = lower_;
+    const std::int64_t bounded = bounded_;
     loops::for_each(n_, [&](std::int64_t i) {
-      const bool blocked = (x[i] <= lower) & (r[i] == 0.0);
+      const bool blocked = (i < bounded) & (x[i] <= lower) & (r[i] == 0.0);
       d[i] = blocked ? 0.0 : -r[i] + beta * d[i];
     });
   }
@@ -121,6 +137,7 @@ class Steps {
  private:
   Formulation &f_;
   std::int64_t n_;
+  std::int64_t bounded_;
   double lower_;
   const Reductions &reductions_;
 };
@@ -266,12 +283,12 @@ void bugnicourt_nonquadratic(Formulation &f, Monitor &monitor) {
 
 bool on_the_gap(const OptionValues &options) { return options.text("variable") == "gap"; }
 
-// The gap formulation needs the stiffness K on the substrate's spectral space, which a free
-// half-space does not have (the inverse of its compliance on the box is not a convolution).
+// On a free substrate the gap formulation takes penetration control only (its constructor
+// refuses the mean gap, naming the substrate).
 Offer offer_for(const OptionValues &options) {
   if (on_the_gap(options))
     return {{Control::mean_gap, Control::penetration},
-            {SubstrateKind::periodic},
+            {SubstrateKind::periodic, SubstrateKind::free},
             {InteractionKind::hard_wall, InteractionKind::adhesive_hard_wall},
             "variable = gap"};
   return {{Control::mean_pressure, Control::penetration},
@@ -314,9 +331,9 @@ AlgorithmSpec bugnicourt_algorithm() {
   spec.interactions = {InteractionKind::hard_wall, InteractionKind::adhesive_hard_wall};
   spec.options = {{"variable", OptionType::choice, 0.0, 0.0, 0.0, false, {"pressure", "gap"},
                    "the unknown: pressure (the dual problem; mean-pressure or penetration "
-                   "control; no adhesion; periodic or free substrate) or gap (the primal; "
-                   "mean-gap or penetration control; with or without adhesion; periodic "
-                   "substrate only)"}};
+                   "control; no adhesion) or gap (the primal; mean-gap or penetration "
+                   "control, penetration only on a free substrate; with or without "
+                   "adhesion)"}};
   spec.run = run;
   return spec;
 }

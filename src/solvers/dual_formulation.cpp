@@ -155,7 +155,7 @@ void DualFormulation::hessian_product(const double *direction, double *product) 
 
 double DualFormulation::error(const double *x, const double *gradient) const {
   // Under load control the penetration is the multiplier of the mean.
-  return bound_residual(grid_.reductions(), n_, x, gradient, 0.0,
+  return bound_residual(grid_.reductions(), n_, n_, x, gradient, 0.0,
                         control_ == Control::mean_pressure);
 }
 

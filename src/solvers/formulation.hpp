@@ -53,11 +53,14 @@ class Formulation {
   virtual double gradient_at_zero(double *out) = 0;
   // The inner product of the variable's space (weighted for packed spectra).
   virtual double dot(const double *a, const double *b) const = 0;
-  // Bound constraints x >= lower_bound() on every unknown (-infinity: none).
+  // Bound constraints x >= lower_bound() (-infinity: none) on the first bounded_size()
+  // unknowns; the others are free of the bound and of the mean constraint (the displacement
+  // of a free substrate's surface outside the box, say).
   virtual double lower_bound() const = 0;
-  // The mean-value constraint of the control, if it imposes one: the mean of the unknowns
-  // must equal mean_target(). A solver that moves the iterate restores it (for example by
-  // rescaling, or by removing the gradient's mean over the free unknowns).
+  virtual std::int64_t bounded_size() const { return size(); }
+  // The mean-value constraint of the control, if it imposes one: the mean of the bounded
+  // unknowns must equal mean_target(). A solver that moves the iterate restores it (for
+  // example by rescaling, or by removing the gradient's mean over the free unknowns).
   virtual bool constrains_mean() const = 0;
   virtual double mean_target() const = 0;
   // The error measure of DESIGN.md section 2 at x with this gradient: the largest projected

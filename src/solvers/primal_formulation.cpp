@@ -1,7 +1,10 @@
 #include "solvers/primal_formulation.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 
+#include "core/error.hpp"
 #include "core/loops.hpp"
 #include "solvers/bound_residual.hpp"
 
@@ -10,14 +13,39 @@ namespace asp {
 PrimalFormulation::PrimalFormulation(System &system, Control control, double value)
     : ScaledFormulation(system, control, value),
       stiffness_(system.substrate().normalised_stiffness()) {
+  unknowns_ = substrate_.surface_size();
+  if (control == Control::mean_gap && unknowns_ > n_)
+    throw Error(Status::unsupported,
+                "mean-gap control of the gap formulation is offered on a periodic half-space "
+                "only: on a " + std::string(substrate_name(substrate_.kind())) +
+                    " the mean displacement is not a free mode whose energy can be left out; "
+                    "use penetration control");
   penetration_ = control == Control::penetration ? target_ : 0.0;
 
   // Work arrays before anything changes, so that running out of memory changes nothing.
-  displacement_ = grid_.make_field();
+  displacement_ = Field(static_cast<std::size_t>(unknowns_));
   spectrum_ = substrate_.make_spectrum();
+  if (unknowns_ > n_) {
+    surface_unknowns_ = Field(static_cast<std::size_t>(unknowns_));
+    surface_pressure_ = Field(static_cast<std::size_t>(unknowns_));
+  }
 
-  // The stored gap as the starting iterate, in units of P/k.
-  double *g = state_.gap.data();
+  // The stored gap as the starting iterate, in units of P/k; on a surface beyond the grid,
+  // the displacement there that the stored pressure makes.
+  if (unknowns_ > n_) {
+    substrate_.forward(state_.pressure.data(), spectrum_.data());
+    Complex *s = spectrum_.data();
+    const double *c = substrate_.normalised_compliance().data();
+    loops::for_each(static_cast<std::int64_t>(spectrum_.size()),
+                    [&](std::int64_t q) { s[q] *= c[q]; });
+    substrate_.surface_backward(spectrum_.data(), surface_unknowns_.data());
+    counters_.transforms += 2;
+    double *outside = surface_unknowns_.data();
+    const double per_length = 1.0 / length_unit_;
+    loops::for_each(unknowns_ - n_, [&](std::int64_t i) { outside[n_ + i] *= per_length; });
+    std::copy(state_.gap.data(), state_.gap.data() + n_, surface_unknowns_.data());
+  }
+  double *g = variable().data();
   const double per_length = 1.0 / length_unit_;
   const double total = loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
     g[i] = (g[i] > 0.0 ? g[i] : 0.0) * per_length;
@@ -36,7 +64,7 @@ PrimalFormulation::PrimalFormulation(System &system, Control control, double val
 
 void PrimalFormulation::apply_stiffness(const double *field, double *out) {
   // K~/k with the transform's 1/N: the scaled stiffness, pixel stiffness 1.
-  substrate_.forward(field, spectrum_.data());
+  substrate_.surface_forward(field, spectrum_.data());
   Complex *s = spectrum_.data();
   const double *k = stiffness_.data();
   const double factor = 1.0 / substrate_.pixel_stiffness();
@@ -44,17 +72,19 @@ void PrimalFormulation::apply_stiffness(const double *field, double *out) {
                   [&](std::int64_t q) { s[q] *= factor * k[q]; });
   // The q = 0 entry is the first: without K~(0) under mean-gap control.
   if (control_ == Control::mean_gap) s[0] = 0.0;
-  substrate_.backward(spectrum_.data(), out);
+  substrate_.surface_backward(spectrum_.data(), out);
   counters_.transforms += 2;
 }
 
 void PrimalFormulation::elastic_pressure(const double *x, double *out) {
-  // u = x + (h - max h)/l + delta, then p = K u, scaled; u stays in displacement_.
+  // u = x + (h - max h)/l + delta on the grid, u = x beyond it, then p = K u, scaled; u stays
+  // in displacement_.
   double *u = displacement_.data();
   const double per_length = 1.0 / length_unit_, top = max_height_, delta = penetration_;
   loops::for_each(n_, [&](std::int64_t i) {
     u[i] = x[i] + (heights_[i] - top) * per_length + delta;
   });
+  std::copy(x + n_, x + unknowns_, u + n_);
   apply_stiffness(u, out);
 }
 
@@ -63,12 +93,17 @@ double PrimalFormulation::value_and_gradient(const double *x, double *gradient) 
   elastic_pressure(x, gradient);
   counters_.evaluations += 1;
   const double *u = displacement_.data();
+  const double beyond =
+      unknowns_ > n_ ? 0.5 * loops::sum(grid_.reductions(), unknowns_ - n_, [&](std::int64_t i) {
+        return u[n_ + i] * gradient[n_ + i];
+      })
+                     : 0.0;
   if (!adhesive_)
-    return 0.5 * loops::sum(grid_.reductions(), n_,
-                            [&](std::int64_t i) { return u[i] * gradient[i]; });
+    return beyond + 0.5 * loops::sum(grid_.reductions(), n_,
+                                     [&](std::int64_t i) { return u[i] * gradient[i]; });
   // One pass adds the interaction's pressure to the gradient and sums both energies.
   const ExponentialPotential phi = adhesion_;
-  return loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
+  return beyond + loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
     const ExponentialPotential::Terms t = phi.at(x[i]);
     const double elastic = 0.5 * u[i] * gradient[i];
     gradient[i] += t.dphi;
@@ -77,7 +112,7 @@ double PrimalFormulation::value_and_gradient(const double *x, double *gradient) 
 }
 
 double PrimalFormulation::gradient_at_zero(double *out) {
-  const Field zero = grid_.make_field();
+  const Field zero(static_cast<std::size_t>(unknowns_), 0.0);
   return value_and_gradient(zero.data(), out);
 }
 
@@ -85,7 +120,7 @@ void PrimalFormulation::hessian_product(const double *direction, double *product
   apply_stiffness(direction, product);
   if (!adhesive_) return;
   // K d + phi''(x) d at the iterate x.
-  const double *x = state_.gap.data();
+  const double *x = variable().data();
   const ExponentialPotential phi = adhesion_;
   loops::for_each(n_, [&](std::int64_t i) { product[i] += phi.d2phi(x[i]) * direction[i]; });
 }
@@ -95,16 +130,17 @@ double PrimalFormulation::curvature_bound(const double *direction,
   if (!adhesive_) return dot(direction, product);
   // phi'' < 0 everywhere, so the Hessian at any point is below K: d.K d bounds the
   // curvature along the whole line, and is d.H d less the interaction's part at x.
-  const double *x = state_.gap.data();
+  const double *x = const_cast<PrimalFormulation *>(this)->variable().data();
   const ExponentialPotential phi = adhesion_;
-  return loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
-    return direction[i] * (product[i] - phi.d2phi(x[i]) * direction[i]);
-  });
+  return dot(direction, product) - loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
+           return phi.d2phi(x[i]) * direction[i] * direction[i];
+         });
 }
 
 double PrimalFormulation::error(const double *x, const double *gradient) const {
   // Under mean-gap control the mean pressure is the multiplier of the mean.
-  return bound_residual(grid_.reductions(), n_, x, gradient, 0.0, control_ == Control::mean_gap);
+  return bound_residual(grid_.reductions(), unknowns_, n_, x, gradient, 0.0,
+                        control_ == Control::mean_gap);
 }
 
 double PrimalFormulation::contact_fraction(const double *x) const {
@@ -115,10 +151,17 @@ double PrimalFormulation::contact_fraction(const double *x) const {
 }
 
 bool PrimalFormulation::finish() {
-  // The elastic pressure of the iterate, p = K u (scaled), into the state's pressure array.
-  double *g = state_.gap.data();
+  // The elastic pressure of the iterate, p = K u (scaled), into the state's pressure array
+  // (on a surface beyond the grid, the grid's part of it; beyond, it is the residual).
   double *p = state_.pressure.data();
-  elastic_pressure(g, p);
+  if (unknowns_ > n_) {
+    elastic_pressure(surface_unknowns_.data(), surface_pressure_.data());
+    std::copy(surface_pressure_.data(), surface_pressure_.data() + n_, p);
+    std::copy(surface_unknowns_.data(), surface_unknowns_.data() + n_, state_.gap.data());
+  } else {
+    elastic_pressure(state_.gap.data(), p);
+  }
+  double *g = state_.gap.data();
   // The interaction's pressure -phi'(g): 0 without adhesion; tensile, at most w/rho at the
   // wall, with it. On the wall the pressure can be no lower than -phi'(0).
   const ExponentialPotential phi = adhesion_;

@@ -10,6 +10,12 @@
 // q = 0 term is left out (the mean displacement does not change the energy of the q != 0
 // modes), and the mean pressure is the Lagrange multiplier of the constraint.
 //
+// On a free substrate the displacement lives on the zero-padded surface (Substrate::
+// surface_size): the unknowns are the gap on the box, then the displacement of the surface
+// outside it, free of the bound. At the optimum the pressure K u vanishes there, so that the
+// energy and the pressure on the box are those of the free half-space (Love's coefficients);
+// only penetration control is offered there.
+//
 // Units as for the dual formulation (SceneUnits): the gradient is the pressure over P, and the
 // error is the largest residual of the optimality conditions in units of P.
 //
@@ -32,7 +38,10 @@ class PrimalFormulation final : public ScaledFormulation {
   // control (uniform if there is none).
   PrimalFormulation(System &system, Control control, double value);
 
-  Field &variable() override { return state_.gap; }
+  // The gap on the grid; on a free substrate followed by the displacement of the padded
+  // surface outside the box, unknowns free of the bound.
+  Field &variable() override { return unknowns_ > n_ ? surface_unknowns_ : state_.gap; }
+  std::int64_t bounded_size() const override { return n_; }
   bool quadratic() const override { return !adhesive_; }
   double value_and_gradient(const double *x, double *gradient) override;
   // K d (+ phi''(x) d at the iterate x with adhesion).
@@ -60,8 +69,12 @@ class PrimalFormulation final : public ScaledFormulation {
   const Field &stiffness_;  // normalised: backward(stiffness * forward(u)) = K u
   double penetration_;  // scaled, in u (0 under mean-gap control, where it does not matter)
 
-  Field displacement_;
+  Field displacement_;  // over the whole surface
   Spectrum spectrum_;
+  // Only where the surface reaches beyond the grid (a free substrate): the unknowns, and the
+  // pressure over the whole surface for finish().
+  Field surface_unknowns_;
+  Field surface_pressure_;
 };
 
 }  // namespace asp

@@ -14,9 +14,10 @@ namespace asp {
 
 class ScaledFormulation : public Formulation {
  public:
-  std::int64_t size() const override { return n_; }
+  std::int64_t size() const override { return unknowns_; }
   double dot(const double *a, const double *b) const override {
-    return loops::sum(grid_.reductions(), n_, [&](std::int64_t i) { return a[i] * b[i]; });
+    return loops::sum(grid_.reductions(), unknowns_,
+                      [&](std::int64_t i) { return a[i] * b[i]; });
   }
   // Converts scaled objective values to the physical energy (per unit length in 1D).
   double energy_unit() const override { return energy_unit_; }
@@ -32,7 +33,8 @@ class ScaledFormulation : public Formulation {
         heights_(system.heights().data()),
         max_height_(system.max_height()),
         control_(control),
-        n_(system.grid().n_pixels()) {
+        n_(system.grid().n_pixels()),
+        unknowns_(n_) {
     const SceneUnits units = scene_units(system, control, value);
     pressure_unit_ = units.pressure;
     length_unit_ = units.length;
@@ -49,7 +51,8 @@ class ScaledFormulation : public Formulation {
   const double *heights_;
   double max_height_;
   Control control_;
-  std::int64_t n_;
+  std::int64_t n_;         // pixels of the grid
+  std::int64_t unknowns_;  // n_, or more where the unknowns reach beyond the grid
 
   double pressure_unit_;  // P
   double length_unit_;    // P/k
