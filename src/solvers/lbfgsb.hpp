@@ -42,7 +42,8 @@ struct Breakpoint {
   std::int64_t i;
 };
 using Breakpoints = std::vector<Breakpoint, FieldAllocator<Breakpoint>>;
-// list and heap are work space, kept by the caller between iterations.
+// g must be the gradient of bfgs's last add_pair (its products with the pairs, W^T g, are
+// used); list and heap are work space, kept by the caller between iterations.
 CauchyPoint generalized_cauchy_point(const double *x, const double *g, std::int64_t n,
                                      double lower, const CompactBfgs &bfgs,
                                      const Reductions &reductions, Indices &list,
