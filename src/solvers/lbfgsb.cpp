@@ -33,10 +33,12 @@ constexpr double infinity = std::numeric_limits<double>::infinity();
 constexpr double epsilon = std::numeric_limits<double>::epsilon();
 
 // Whether unknown i sits on the bound at the point t of the projected path x(t): it was on
-// the bound with g pushing outwards (t_i = 0), or its breakpoint t_i = (x_i - lower)/g_i is
-// at most t. The one place that decides it, so that the heap's order and the masks agree.
+// the bound with g pushing outwards (t = 0), or its breakpoint (x_i - lower)/g_i is at most
+// t, tested without a division. The one place that decides it for every pass. (Where
+// rounding makes it disagree with the heap's order, the unknown's breakpoint equals t to
+// rounding: it is on the bound either way.)
 inline bool at_bound(double x, double g, double lower, double t) {
-  return g > 0.0 && (x <= lower || (x - lower) / g <= t);
+  return g > 0.0 && x - lower <= t * g;
 }
 
 // Over the unknowns of a set (in(i)) whose size is about `size`: the sums of g_i w_i into a
@@ -108,6 +110,7 @@ CauchyPoint generalized_cauchy_point(const double *x, const double *g, std::int6
   double slope = -start[1];
   cauchy.at_bound = held;
   if (!(slope < 0.0)) return cauchy;  // the path does not move: x is its own Cauchy point
+  // M p and M c are carried along with p and c, so that a segment needs one product with M.
   std::vector<double> p(size), mp(size), mc(size, 0.0), w(size), mw(size);
   if (k2 > 0) {
     sums_over_set([&](std::int64_t i) { return !at_bound(x[i], g[i], lower, 0.0); }, n - held,
@@ -143,17 +146,20 @@ CauchyPoint generalized_cauchy_point(const double *x, const double *g, std::int6
     ++cauchy.at_bound;
     // Unknown b reaches the bound: z_b = lower - x_b, and it leaves the direction.
     const double gb = g[b.i], zb = lower - x[b.i];
-    for (std::size_t j = 0; j < size; ++j) cauchy.c[j] += length * p[j];
-    for (int j = 0; j < k2; ++j) w[j] = bfgs.entry(j, b.i);
-    if (k2 > 0) {
-      bfgs.times_middle(w.data(), mw.data());
-      bfgs.times_middle(cauchy.c.data(), mc.data());
+    for (std::size_t j = 0; j < size; ++j) {
+      cauchy.c[j] += length * p[j];
+      mc[j] += length * mp[j];
     }
+    for (int j = 0; j < k2; ++j) w[j] = bfgs.entry(j, b.i);
+    if (k2 > 0) bfgs.times_middle(w.data(), mw.data());
     slope += length * curvature + gb * gb + theta * gb * zb - gb * dot(w, mc);
     curvature += -theta * gb * gb - 2.0 * gb * dot(mw, p) - gb * gb * dot(w, mw);
     // Rounding must not make the model's curvature vanish or change sign.
     curvature = std::max(epsilon * initial_curvature, curvature);
-    for (std::size_t j = 0; j < size; ++j) p[j] += gb * w[j];
+    for (std::size_t j = 0; j < size; ++j) {
+      p[j] += gb * w[j];
+      mp[j] += gb * mw[j];
+    }
     to_minimum = -slope / curvature;
     t = b.t;
   }
@@ -281,12 +287,8 @@ class Lbfgsb {
     const double inverse_theta = 1.0 / bfgs_.theta(), t = cauchy.t, lower = lower_;
     const double *x = x_, *g = g_.data(), *u = u_.data();
     double *d = d_.data();
+    // The list of free unknowns, when they are few, is the one the subspace sums made.
     const bool listed = k2 > 0 && free_count <= n_ / 2;
-    if (listed) {
-      list_.clear();
-      loops::select(n_, [&](std::int64_t i) { return !at_bound(x[i], g[i], lower, t); },
-                    list_);
-    }
     // d holds x_bar before its projection; with a list, without w_i.u yet.
     const CompactBfgs &bfgs = bfgs_;
     if (k2 == 0 || listed) {
@@ -489,7 +491,7 @@ AlgorithmSpec lbfgsb_algorithm() {
       {"variable", OptionType::choice, 0.0, 0.0, 0.0, false, {"pressure", "gap"},
        "the unknown: pressure (the dual problem) or gap (the primal); penetration control "
        "on either"},
-      {"memory", OptionType::integer, 10, 1, 100, false, {},
+      {"memory", OptionType::integer, 5, 1, 100, false, {},
        "the number of step and gradient-change pairs the quasi-Newton matrix keeps (16 bytes "
        "per pixel each)"},
   };

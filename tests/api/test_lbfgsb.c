@@ -27,9 +27,9 @@ int main(void) {
   CHECK_OK(asp_system_set_topography(system, h, n));
   CHECK_OK(asp_solver_create("lbfgsb", &solver));
 
-  /* Defaults: 10 pairs, on the pressure. */
+  /* Defaults: 5 pairs, on the pressure. */
   CHECK_OK(asp_solver_get_option(solver, "memory", &memory));
-  CHECK(memory == 10);
+  CHECK(memory == 5);
   CHECK_OK(asp_solver_get_option_string(solver, "variable", text, sizeof text, NULL));
   CHECK(strcmp(text, "pressure") == 0);
 
@@ -49,7 +49,7 @@ int main(void) {
   CHECK_ERROR(asp_solver_set_option_string(solver, "variable", "displacement"),
               ASP_ERR_INVALID_ARGUMENT, "pressure, gap");
   CHECK_OK(asp_solver_get_option(solver, "memory", &memory));
-  CHECK(memory == 10);
+  CHECK(memory == 5);
   CHECK_OK(asp_solver_set_option(solver, "memory", 3));
   CHECK_OK(asp_solver_get_option(solver, "memory", &memory));
   CHECK(memory == 3);
