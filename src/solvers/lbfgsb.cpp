@@ -190,7 +190,8 @@ class Lbfgsb {
         d_(static_cast<std::size_t>(n_)),
         bfgs_(n_, memory, reductions_) {}
 
-  // Algorithm 3.1 of the paper, from x projected onto the bound.
+  // The paper's algorithm, step by step, from x projected onto the bound: Cauchy point,
+  // subspace minimisation, line search, update of the pairs, test for convergence.
   void run(Monitor &monitor) {
     project_start();
     value_ = f_.value_and_gradient(x_, g_.data());
