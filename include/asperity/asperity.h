@@ -66,7 +66,9 @@
  * ---------------------------------------------------------------------------------------------
  * A system holds 3 fields of nx*ny doubles (heights, pressure, gap): 24 bytes per pixel. A
  * solve adds the work arrays of its algorithm ("pk": 36 bytes per pixel, "bugnicourt": 60 on
- * the pressure and on the gap; see docs/performance.md); a grid adds FFTW's plans. A request
+ * the pressure and on the gap, "lbfgsb": 52 + 16 per pair of its "memory", 132 with the
+ * default 5, plus index lists and a heap of breakpoints, measured 6 bytes per pixel on the
+ * pressure and 28 on the gap; see docs/performance.md); a grid adds FFTW's plans. A request
  * whose arrays cannot be allocated returns ASP_ERR_OUT_OF_MEMORY and changes nothing.
  *
  * ---------------------------------------------------------------------------------------------
@@ -409,7 +411,15 @@ typedef struct asp_solver asp_solver;
  *                 ("gap"; controls ASP_CONTROL_MEAN_GAP, ASP_CONTROL_PENETRATION; with or
  *                 without adhesion, see asp_system_set_adhesion; periodic substrate only).
  *                 Faster than "pk" near full contact. Stops as stalled also when it has no
- *                 descent direction left. */
+ *                 descent direction left.
+ *   "lbfgsb"      Byrd, Lu, Nocedal & Zhu's L-BFGS-B (1995; hard wall, no adhesion,
+ *                 periodic or free substrate) on the pressure (option "variable" =
+ *                 "pressure", the default) or on the gap ("gap"), under
+ *                 ASP_CONTROL_PENETRATION only: it keeps the unknowns in bounds but cannot
+ *                 impose a mean, so mean-pressure and mean-gap control are refused with
+ *                 ASP_ERR_UNSUPPORTED. Option "memory" (integer in [1, 100], default 5): the
+ *                 correction pairs it keeps. Stops as stalled when even a steepest-descent
+ *                 line search finds no decrease (the rounding floor). */
 ASP_EXPORT int asp_solver_create(const char *algorithm, asp_solver **out);
 ASP_EXPORT void asp_solver_destroy(asp_solver *solver);
 

@@ -5,6 +5,7 @@
 // Reductions (the identity on one process).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <limits>
@@ -72,6 +73,28 @@ std::array<double, K + 1> sums_and_max(const Reductions &reductions, std::int64_
   for (int k = 0; k < K; ++k) out[k] = sum[k];
   out[K] = max;
   return out;
+}
+
+// count sums, with count known only at run time: body(begin, end, sum) adds the terms of the
+// entries [begin, end) to sum[0..count-1]. The entries come in blocks small enough to stay
+// in the first-level cache, so that a body may pass over its block several times (once per
+// stored vector, say) while every array is read from memory once.
+template <class Body>
+void block_sums(const Reductions &reductions, std::int64_t n, int count, double *sum,
+                Body &&body) {
+  constexpr std::int64_t block = 256;
+  std::fill(sum, sum + count, 0.0);
+  for (std::int64_t begin = 0; begin < n; begin += block)
+    body(begin, std::min(n, begin + block), sum);
+  reductions.combine_sums(sum, count);
+}
+
+// The entries i in [0, n) with keep(i), in increasing order, appended to out (a container
+// of indices). Not vectorised: it writes a variable number of entries.
+template <class Indices, class Keep>
+void select(std::int64_t n, Keep &&keep, Indices &out) {
+  for (std::int64_t i = 0; i < n; ++i)
+    if (keep(i)) out.push_back(i);
 }
 
 }  // namespace loops

@@ -142,19 +142,6 @@ class Steps {
   const Reductions &reductions_;
 };
 
-// The state the monitor sees at x with the gradient g (before projection) and the value.
-IterationState observe(const Formulation &f, const double *x, const double *g, double value,
-                       const Monitor &monitor) {
-  IterationState state;
-  state.error = f.error(x, g);
-  state.objective =
-      monitor.wants_objective() ? f.reported_objective(x, g, value) * f.energy_unit() : 0.0;
-  state.contact_fraction = monitor.wants_objective() ? f.contact_fraction(x) : 0.0;
-  state.evaluations = f.counters().evaluations;
-  state.transforms = f.counters().transforms;
-  return state;
-}
-
 // Alg. 4: exact step along d (the objective is quadratic), projection onto the bound, the
 // mean restored, then the conjugate direction with beta = r.Hd / d.Hd. The gradient g of a
 // step the bound did not cut follows from the Hessian product already made for the step

@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "solvers/bugnicourt.hpp"
+#include "solvers/lbfgsb.hpp"
 #include "solvers/polonsky_keer.hpp"
 
 namespace asp {
@@ -58,7 +59,8 @@ std::string number_text(double v) {
 
 const std::vector<AlgorithmSpec> &algorithms() {
   static const std::vector<AlgorithmSpec> all = {with_common_options(polonsky_keer_algorithm()),
-                                                 with_common_options(bugnicourt_algorithm())};
+                                                 with_common_options(bugnicourt_algorithm()),
+                                                 with_common_options(lbfgsb_algorithm())};
   return all;
 }
 

@@ -122,6 +122,18 @@ void Solver::solve(System &system, Control control, double value) {
   history_ = std::move(monitor.history());
 }
 
+IterationState observe(const Formulation &f, const double *x, const double *g, double value,
+                       const Monitor &monitor) {
+  IterationState state;
+  state.error = f.error(x, g);
+  state.objective =
+      monitor.wants_objective() ? f.reported_objective(x, g, value) * f.energy_unit() : 0.0;
+  state.contact_fraction = monitor.wants_objective() ? f.contact_fraction(x) : 0.0;
+  state.evaluations = f.counters().evaluations;
+  state.transforms = f.counters().transforms;
+  return state;
+}
+
 void conclude(Formulation &formulation, System &system, Monitor &monitor) {
   if (monitor.termination() == Termination::breakdown || !formulation.finish()) {
     system.reset_state();

@@ -66,6 +66,12 @@ class Solver {
   History history_;
 };
 
+// The state the monitor sees at x with the gradient g (before any projection) and the
+// objective's value there: the error, the counters, and the reported objective and contact
+// fraction when the history is recorded.
+IterationState observe(const Formulation &f, const double *x, const double *g, double value,
+                       const Monitor &monitor);
+
 // The end of every algorithm's run: writes the formulation's iterate back into the system, or,
 // after a breakdown (seen by the monitor or in the physical values), resets the system to zero
 // pressure and records the breakdown.

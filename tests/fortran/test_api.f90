@@ -79,7 +79,8 @@ program test_api
   real(c_double), parameter :: tolerance = 1d-10
   character(len=*), parameter :: wisdom_file = 'fortran_api.wisdom'
 
-  type(c_ptr) :: grid, system, solver, no_solver, adhesive_solver, free_system, line, no_system
+  type(c_ptr) :: grid, system, solver, no_solver, adhesive_solver, free_system, line, no_system, &
+                 lbfgsb
   type(progress_counter), target :: counter
   real(c_double), allocatable :: heights(:, :), pressure(:, :), column(:)
   real(c_double), allocatable :: seconds(:), errors(:), evaluations(:), transforms(:)
@@ -89,7 +90,7 @@ program test_api
   character(len=32) :: padded_name
   integer(c_int64_t) :: length, rows, iterations, count, nx, ny, pixels, i
   integer(c_int) :: status, reason, converged, dimension
-  real(c_double) :: value, error, scalar, lx, ly
+  real(c_double) :: value, error, scalar, lx, ly, penetration
   integer :: k, unit
 
   allocate (heights(n, n), pressure(n, n))
@@ -361,6 +362,40 @@ program test_api
                      'asp_system_get(WORK_OF_ADHESION)')
   call expect(scalar == 0, 'no work of adhesion after setting 0')
   call asp_solver_destroy(adhesive_solver)
+  ! ---- lbfgsb: its options set through the Fortran wrappers, then a solve under penetration
+  ! control at pk's penetration, on the gap ----
+  call expect_status(asp_solver_create_f('lbfgsb', lbfgsb), ASP_OK, 'asp_solver_create_f(lbfgsb)')
+  call expect_status(asp_solver_set_option_f(lbfgsb, 'memory', 5d0), ASP_OK, &
+                     'asp_solver_set_option_f(memory)')
+  call expect_status(asp_solver_get_option_f(lbfgsb, 'memory', value), ASP_OK, &
+                     'asp_solver_get_option_f(memory)')
+  call expect(value == 5, 'the memory is the one set')
+  call expect_status(asp_solver_set_option_f(lbfgsb, 'memory', 0d0), ASP_ERR_INVALID_ARGUMENT, &
+                     'a memory of 0 is refused')
+  call expect(index(asp_last_error_text(), 'memory') > 0, &
+              'the message names the option: ' // asp_last_error_text())
+  call expect_status(asp_solver_set_option_string_f(lbfgsb, 'variable', 'gap'), ASP_OK, &
+                     'asp_solver_set_option_string_f(variable)')
+  call expect(asp_solver_get_option_string_text(lbfgsb, 'variable') == 'gap', &
+              'the variable is the one set')
+  call expect_status(asp_solver_set_option_f(lbfgsb, 'tolerance', tolerance), ASP_OK, &
+                     'asp_solver_set_option_f(tolerance) for lbfgsb')
+  call expect_status(asp_solver_solve(lbfgsb, system, ASP_CONTROL_MEAN_PRESSURE, mean_pressure), &
+                     ASP_ERR_UNSUPPORTED, 'lbfgsb refuses mean-pressure control')
+  call expect_status(asp_system_get(system, ASP_PENETRATION, penetration), ASP_OK, &
+                     'asp_system_get(PENETRATION) for lbfgsb')
+  call expect_status(asp_system_reset(system), ASP_OK, 'asp_system_reset before lbfgsb')
+  call expect_status(asp_solver_solve(lbfgsb, system, ASP_CONTROL_PENETRATION, penetration), &
+                     ASP_OK, 'lbfgsb under penetration control')
+  call expect_status(asp_solver_converged(lbfgsb, converged), ASP_OK, &
+                     'asp_solver_converged for lbfgsb')
+  call expect(converged == 1, 'lbfgsb converges')
+  call expect_status(asp_system_get(system, ASP_MEAN_PRESSURE, scalar), ASP_OK, &
+                     'asp_system_get(MEAN_PRESSURE) after lbfgsb')
+  ! The load of pk's solution, to what the tolerance 1e-10 leaves of the pressures.
+  call expect(abs(scalar - mean_pressure) <= 1d-6 * mean_pressure, &
+              'lbfgsb finds the load of the penetration')
+  call asp_solver_destroy(lbfgsb)
 
   ! ---- FFTW wisdom ----
   call expect_status(asp_fft_export_wisdom_f(wisdom_file), ASP_OK, 'asp_fft_export_wisdom_f')

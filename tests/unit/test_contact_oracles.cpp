@@ -102,13 +102,16 @@ TEST(Westergaard, HalfWidthAndPressureProfileConvergeWithResolution) {
 
 // ---- Hertz: a paraboloid on a periodic substrate at small contact radius --------------------
 // Every solver of the non-adhesive hard wall meets it (bugnicourt on the pressure and on the
-// gap, the latter under mean-gap control at the gap pk's solution leaves).
+// gap, the latter under mean-gap control at the gap pk's solution leaves; lbfgsb on either,
+// under penetration control at pk's penetration).
 struct HertzSolver {
   const char *algorithm;
   const char *variable;  // nullptr: the algorithm has no such option
+  bool penetration;      // solved under penetration control
 };
 void PrintTo(const HertzSolver &s, std::ostream *os) {
-  *os << s.algorithm << (s.variable ? std::string(" on the ") + s.variable : std::string());
+  *os << s.algorithm << (s.variable ? std::string(" on the ") + s.variable : std::string())
+      << (s.penetration ? " under penetration control" : "");
 }
 class Hertz : public ::testing::TestWithParam<HertzSolver> {};
 
@@ -125,13 +128,16 @@ TEST_P(Hertz, PeriodicParaboloidAtSmallContactRadius) {
   const double force = 4 * modulus * a * a * a / (3 * radius);
   asp::Control control = asp::Control::mean_pressure;
   double value = force / (l * l);
-  if (solver_case.variable != nullptr && std::string(solver_case.variable) == "gap") {
-    // The primal takes the mean gap: that of the pressure-controlled solution.
+  const bool on_the_gap =
+      solver_case.variable != nullptr && std::string(solver_case.variable) == "gap";
+  if (on_the_gap || solver_case.penetration) {
+    // The primal takes the mean gap, and penetration control the penetration, of the
+    // pressure-controlled solution.
     asp::System reference(grid, modulus);
     reference.set_topography(h.data());
     ASSERT_TRUE(asp_test::solve_pk(reference, control, value, 1e-10).converged());
-    control = asp::Control::mean_gap;
-    value = reference.mean_gap();
+    control = solver_case.penetration ? asp::Control::penetration : asp::Control::mean_gap;
+    value = solver_case.penetration ? reference.state().penetration : reference.mean_gap();
   }
   asp::Solver solver(solver_case.algorithm);
   solver.set_option("tolerance", 1e-10);
@@ -153,15 +159,17 @@ TEST_P(Hertz, PeriodicParaboloidAtSmallContactRadius) {
   // of relative size (a/l)^3 ~ 6e-4; 1% is ample (measured +0.07%).
   EXPECT_NEAR(a_measured / a, 1.0, 0.02);
   EXPECT_NEAR(p_max / p0, 1.0, 0.01);
-  // Under mean-gap control the load is a result: that of the reference solve, to the
-  // tolerance's effect on the multiplier.
+  // Under mean-gap or penetration control the load is a result: that of the reference
+  // solve, to the tolerance's effect on the multiplier or the pressures.
   EXPECT_NEAR(system.mean_pressure(), force / (l * l), 1e-6 * force / (l * l));
 }
 
 INSTANTIATE_TEST_SUITE_P(Solvers, Hertz,
-                         ::testing::Values(HertzSolver{"pk", nullptr},
-                                           HertzSolver{"bugnicourt", "pressure"},
-                                           HertzSolver{"bugnicourt", "gap"}),
+                         ::testing::Values(HertzSolver{"pk", nullptr, false},
+                                           HertzSolver{"bugnicourt", "pressure", false},
+                                           HertzSolver{"bugnicourt", "gap", false},
+                                           HertzSolver{"lbfgsb", "pressure", true},
+                                           HertzSolver{"lbfgsb", "gap", true}),
                          [](const ::testing::TestParamInfo<HertzSolver> &info) {
                            return std::string(info.param.algorithm) +
                                   (info.param.variable ? std::string("_") + info.param.variable

@@ -1,0 +1,505 @@
+#include "solvers/lbfgsb.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <utility>
+
+#include "core/error.hpp"
+#include "core/loops.hpp"
+#include "solvers/dual_formulation.hpp"
+#include "solvers/line_search.hpp"
+#include "solvers/primal_formulation.hpp"
+#include "solvers/solver.hpp"
+
+namespace asp {
+namespace {
+
+// The line search's parameters, L-BFGS-B's: sufficient decrease 1e-3, curvature 0.9 (loose,
+// as quasi-Newton methods want, so that the unit step is nearly always taken), interval
+// width 0.1; and at most 20 evaluations per search.
+constexpr double sufficient_decrease = 1e-3;
+constexpr double curvature_condition = 0.9;
+constexpr double interval_width = 0.1;
+constexpr int evaluations_per_search = 20;
+// Below this change relative to phi(0), values are too close to compare (Hager & Zhang's
+// epsilon).
+constexpr double values_resolved = 1e-6;
+// The largest step of a search along a direction no bound limits.
+constexpr double unbounded_step = 1e10;
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
+constexpr double epsilon = std::numeric_limits<double>::epsilon();
+
+// Whether unknown i sits on the bound at the point t of the projected path x(t): it was on
+// the bound with g pushing outwards (t = 0), or its breakpoint (x_i - lower)/g_i is at most
+// t, tested without a division. The one place that decides it for every pass. (Where
+// rounding makes it disagree with the heap's order, the unknown's breakpoint equals t to
+// rounding: it is on the bound either way.)
+inline bool at_bound(double x, double g, double lower, double t) {
+  return g > 0.0 && x - lower <= t * g;
+}
+
+// Over the unknowns of a set (in(i)) whose size is about `size`: the sums of g_i w_i into a
+// (2k entries) and, if gram is not null, of w_i w_i^T into gram (2k x 2k), with w_i row i of
+// W. They are summed over the set or over its complement, whichever is smaller, the latter
+// subtracted from the totals W^T g and W^T W that the compact matrix keeps: so that only
+// the few unknowns in (or out of) contact are visited.
+template <class In>
+void sums_over_set(In in, std::int64_t size, std::int64_t n, const double *g,
+                   const CompactBfgs &bfgs, const Reductions &reductions, Indices &list,
+                   double *a, double *gram) {
+  const int k2 = bfgs.columns();
+  const bool complement = size > n / 2;
+  list.clear();
+  loops::select(n, [&](std::int64_t i) { return in(i) != complement; }, list);
+  const std::int64_t listed = static_cast<std::int64_t>(list.size());
+  const int count = k2 + (gram != nullptr ? k2 * k2 : 0);
+  std::vector<double> sums(static_cast<std::size_t>(count));
+  std::vector<double> w(static_cast<std::size_t>(k2));
+  loops::block_sums(reductions, listed, count, sums.data(),
+                    [&](std::int64_t begin, std::int64_t end, double *sum) {
+                      for (std::int64_t position = begin; position < end; ++position) {
+                        const std::int64_t i = list[static_cast<std::size_t>(position)];
+                        for (int j = 0; j < k2; ++j) w[j] = bfgs.entry(j, i);
+                        for (int j = 0; j < k2; ++j) sum[j] += g[i] * w[j];
+                        if (gram == nullptr) continue;
+                        for (int r = 0; r < k2; ++r)
+                          for (int c = r; c < k2; ++c) sum[k2 + r * k2 + c] += w[r] * w[c];
+                      }
+                    });
+  const std::vector<double> &wtg = bfgs.times_gradient(), &wtw = bfgs.gram();
+  for (int j = 0; j < k2; ++j) a[j] = complement ? wtg[j] - sums[j] : sums[j];
+  if (gram == nullptr) return;
+  for (int r = 0; r < k2; ++r)
+    for (int c = r; c < k2; ++c) {
+      const std::size_t rc = static_cast<std::size_t>(r) * k2 + c;
+      const double v = complement ? wtw[rc] - sums[k2 + rc] : sums[k2 + rc];
+      gram[rc] = v;
+      gram[static_cast<std::size_t>(c) * k2 + r] = v;
+    }
+}
+
+double dot(const std::vector<double> &a, const std::vector<double> &b) {
+  double sum = 0.0;
+  for (std::size_t j = 0; j < a.size(); ++j) sum += a[j] * b[j];
+  return sum;
+}
+
+}  // namespace
+
+CauchyPoint generalized_cauchy_point(const double *x, const double *g, std::int64_t n,
+                                     std::int64_t bounded, double lower,
+                                     const CompactBfgs &bfgs, const Reductions &reductions,
+                                     Indices &list, Breakpoints &heap) {
+  const auto bound = [&](std::int64_t i) { return i < bounded ? lower : -infinity; };
+  const int k2 = bfgs.columns();
+  const double theta = bfgs.theta();
+  const auto size = static_cast<std::size_t>(k2);
+  CauchyPoint cauchy;
+  cauchy.c.assign(size, 0.0);
+
+  // The direction d = -g, zero where the bound holds the unknown (t_i = 0); the slope
+  // f' = g.d and p = W^T d.
+  const auto start = loops::sums<2>(reductions, n, [&](std::int64_t i, double *sum) {
+    const bool held = at_bound(x[i], g[i], bound(i), 0.0);
+    sum[0] += held ? 1.0 : 0.0;
+    sum[1] += held ? 0.0 : g[i] * g[i];
+  });
+  const auto held = static_cast<std::int64_t>(start[0]);
+  double slope = -start[1];
+  cauchy.at_bound = held;
+  if (!(slope < 0.0)) return cauchy;  // the path does not move: x is its own Cauchy point
+  // M p and M c are carried along with p and c, so that a segment needs one product with M.
+  std::vector<double> p(size), mp(size), mc(size, 0.0), w(size), mw(size);
+  if (k2 > 0) {
+    sums_over_set([&](std::int64_t i) { return !at_bound(x[i], g[i], bound(i), 0.0); }, n - held,
+                  n, g, bfgs, reductions, list, p.data(), nullptr);
+    for (double &v : p) v = -v;
+    bfgs.times_middle(p.data(), mp.data());
+  }
+  // f'' = d.B d = -theta f' - p.M p.
+  double curvature = -theta * slope - dot(p, mp);
+  const double initial_curvature = curvature;
+  double to_minimum = -slope / curvature;
+
+  // The breakpoints in a heap, smallest first.
+  const auto later = [](const Breakpoint &a, const Breakpoint &b) { return a.t > b.t; };
+  list.clear();
+  loops::select(n,
+                [&](std::int64_t i) {
+                  return g[i] > 0.0 && x[i] > bound(i) && std::isfinite((x[i] - bound(i)) / g[i]);
+                },
+                list);
+  heap.clear();
+  for (std::int64_t i : list) heap.push_back({(x[i] - bound(i)) / g[i], i});
+  std::make_heap(heap.begin(), heap.end(), later);
+
+  // Segment after segment, until the minimum of the model lies inside one.
+  double t = 0.0;
+  while (!heap.empty()) {
+    const Breakpoint b = heap.front();
+    const double length = b.t - t;
+    if (to_minimum < length) break;
+    std::pop_heap(heap.begin(), heap.end(), later);
+    heap.pop_back();
+    ++cauchy.at_bound;
+    // Unknown b reaches the bound: z_b = lower - x_b, and it leaves the direction.
+    const double gb = g[b.i], zb = bound(b.i) - x[b.i];
+    for (std::size_t j = 0; j < size; ++j) {
+      cauchy.c[j] += length * p[j];
+      mc[j] += length * mp[j];
+    }
+    for (int j = 0; j < k2; ++j) w[j] = bfgs.entry(j, b.i);
+    if (k2 > 0) bfgs.times_middle(w.data(), mw.data());
+    slope += length * curvature + gb * gb + theta * gb * zb - gb * dot(w, mc);
+    curvature += -theta * gb * gb - 2.0 * gb * dot(mw, p) - gb * gb * dot(w, mw);
+    // Rounding must not make the model's curvature vanish or change sign.
+    curvature = std::max(epsilon * initial_curvature, curvature);
+    for (std::size_t j = 0; j < size; ++j) {
+      p[j] += gb * w[j];
+      mp[j] += gb * mw[j];
+    }
+    to_minimum = -slope / curvature;
+    t = b.t;
+  }
+  to_minimum = std::max(to_minimum, 0.0);
+  cauchy.t = t + to_minimum;
+  for (std::size_t j = 0; j < size; ++j) cauchy.c[j] += to_minimum * p[j];
+  return cauchy;
+}
+
+namespace {
+
+// What a line search did.
+enum class Search { accepted, no_descent, failed, not_finite };
+
+// The algorithm's state between its steps: the iterate x (the formulation's variable), its
+// gradient g and value, the compact matrix, and the work fields of one iteration.
+class Lbfgsb {
+ public:
+  Lbfgsb(Formulation &f, int memory)
+      : f_(f),
+        n_(f.size()),
+        bounded_(f.bounded_size()),
+        lower_(f.lower_bound()),
+        reductions_(f.reductions()),
+        x_(f.variable().data()),
+        g_(static_cast<std::size_t>(n_)),
+        trial_gradient_(static_cast<std::size_t>(n_)),
+        x_old_(static_cast<std::size_t>(n_)),
+        d_(static_cast<std::size_t>(n_)),
+        bfgs_(n_, memory, reductions_) {}
+
+  // The paper's algorithm, step by step, from x projected onto the bound: Cauchy point,
+  // subspace minimisation, line search, update of the pairs, test for convergence.
+  void run(Monitor &monitor) {
+    project_start();
+    value_ = f_.value_and_gradient(x_, g_.data());
+    if (monitor.should_stop(0, observe(f_, x_, g_.data(), value_, monitor))) return;
+    bool first = true;
+    for (std::int64_t iteration = 1;;) {
+      const CauchyPoint cauchy = generalized_cauchy_point(x_, g_.data(), n_, bounded_, lower_, bfgs_,
+                                                          reductions_, list_, heap_);
+      subspace_minimisation(cauchy);
+      const Search search = line_search(first);
+      if (search == Search::not_finite) {
+        monitor.declare_breakdown();
+        return;
+      }
+      if (search != Search::accepted) {
+        // The model's direction is no use (rounding near the solution, or a poor memory):
+        // start again from the steepest descent with no pairs. Without pairs there is no
+        // descent left short of the tolerance: the iterate is stationary to rounding.
+        if (bfgs_.pairs() == 0) {
+          monitor.declare_stalled();
+          return;
+        }
+        bfgs_.forget();
+        continue;
+      }
+      first = false;
+      update_memory();
+      if (monitor.should_stop(iteration, observe(f_, x_, g_.data(), value_, monitor))) return;
+      ++iteration;
+    }
+  }
+
+ private:
+  // The start must be feasible: x <- max(x, lower), which changes no feasible entry.
+  void project_start() {
+    double *x = x_;
+    loops::for_each(n_, [&](std::int64_t i) { x[i] = x[i] > bound(i) ? x[i] : bound(i); });
+  }
+
+  // Step 3: the minimiser of the model over the unknowns the Cauchy point leaves free, by
+  // the direct primal method: on the free set the model's Hessian is theta I - Z^T W M W^T Z,
+  // whose inverse Sherman-Morrison-Woodbury gives through 2k x 2k matrices. Its minimiser,
+  // for a free unknown,
+  //     x_bar_i = x_i - g_i/theta + w_i.u,  u = M c/theta - N^-1 M W^T Z r/theta^2,
+  // with r the model's reduced gradient at the Cauchy point and N = I - M W^T Z Z^T W/theta;
+  // on the bound at the Cauchy point, x_bar_i = lower. Then Morales & Nocedal's remark:
+  // x_bar is projected onto the bound, and if the step to it is no descent direction, the
+  // unprojected step is cut back to the bound instead. Leaves d = x_bar - x, x_old = x.
+  void subspace_minimisation(const CauchyPoint &cauchy) {
+    const int k2 = bfgs_.columns();
+    const double theta = bfgs_.theta(), t = cauchy.t;
+    const double *x = x_, *g = g_.data();
+    const auto size = static_cast<std::size_t>(k2);
+    const std::int64_t free_count = n_ - cauchy.at_bound;
+    const auto fixed = [&](std::int64_t i) { return at_bound(x[i], g[i], bound(i), t); };
+    u_.assign(size, 0.0);
+    if (k2 > 0) {
+      // W^T Z r = (1 - theta t) sum_free g_i w_i - (Z^T W)^T Z^T W M c, since on the free
+      // set x_cauchy - x = -t g.
+      std::vector<double> a(size), gram(size * size), mc(size), rhs(size), v(size);
+      sums_over_set([&](std::int64_t i) { return !fixed(i); }, free_count, n_, g, bfgs_,
+                    reductions_, list_, a.data(), gram.data());
+      bfgs_.times_middle(cauchy.c.data(), mc.data());
+      for (std::size_t r = 0; r < size; ++r) {
+        double kmc = 0.0;
+        for (std::size_t c = 0; c < size; ++c) kmc += gram[r * size + c] * mc[c];
+        rhs[r] = (1.0 - theta * t) * a[r] - kmc;
+      }
+      bfgs_.times_middle(rhs.data(), v.data());
+      // N = I - M K/theta, K = Z^T W ^T Z^T W (symmetric, so M K's columns are M times K's).
+      std::vector<double> mk(size * size), column(size), product(size);
+      for (std::size_t c = 0; c < size; ++c) {
+        for (std::size_t r = 0; r < size; ++r) column[r] = gram[r * size + c];
+        bfgs_.times_middle(column.data(), product.data());
+        for (std::size_t r = 0; r < size; ++r)
+          mk[r * size + c] = (r == c ? 1.0 : 0.0) - product[r] / theta;
+      }
+      if (solve_small(mk, k2, v.data(), 1)) {
+        for (std::size_t j = 0; j < size; ++j) u_[j] = mc[j] / theta - v[j] / (theta * theta);
+      } else {
+        // N singular to working precision: keep the Cauchy point's own direction.
+        for (std::size_t j = 0; j < size; ++j) u_[j] = mc[j] / theta;
+      }
+    }
+    if (!project_subspace_step(cauchy, free_count)) backtrack_subspace_step(cauchy);
+  }
+
+  // x_bar projected onto the bound: d = max(x_bar, lower) - x. Returns whether d is a
+  // descent direction (g.d < 0). The model's correction w_i.u is added over the free
+  // unknowns only: in one pass with the rest if they are many, from a list if they are few.
+  bool project_subspace_step(const CauchyPoint &cauchy, std::int64_t free_count) {
+    const int k2 = bfgs_.columns();
+    const double inverse_theta = 1.0 / bfgs_.theta(), t = cauchy.t;
+    const double *x = x_, *g = g_.data(), *u = u_.data();
+    double *d = d_.data();
+    // The list of free unknowns, when they are few, is the one the subspace sums made.
+    const bool listed = k2 > 0 && free_count <= n_ / 2;
+    // d holds x_bar before its projection; with a list, without w_i.u yet.
+    const CompactBfgs &bfgs = bfgs_;
+    if (k2 == 0 || listed) {
+      loops::for_each(n_, [&](std::int64_t i) {
+        d[i] = at_bound(x[i], g[i], bound(i), t) ? bound(i) : x[i] - g[i] * inverse_theta;
+      });
+      if (listed)
+        for (std::int64_t i : list_) d[i] += bfgs.row_times(i, u);
+    } else {
+      loops::for_each(n_, [&](std::int64_t i) {
+        d[i] = at_bound(x[i], g[i], bound(i), t) ? bound(i)
+                                               : x[i] - g[i] * inverse_theta + bfgs.row_times(i, u);
+      });
+    }
+    return finish_direction();
+  }
+
+  // The backtracked step: x_bar = x_cauchy + alpha (x_unprojected - x_cauchy) on the free
+  // unknowns, alpha <= 1 the largest that keeps every one feasible.
+  void backtrack_subspace_step(const CauchyPoint &cauchy) {
+    const double inverse_theta = 1.0 / bfgs_.theta(), t = cauchy.t;
+    const double *x = x_, *g = g_.data(), *u = u_.data();
+    double *d = d_.data();
+    const CompactBfgs &bfgs = bfgs_;
+    const int k2 = bfgs_.columns();
+    // d <- the unprojected step from the Cauchy point, 0 at the bound.
+    loops::for_each(n_, [&](std::int64_t i) {
+      const double cauchy_i = x[i] - t * g[i];
+      d[i] = at_bound(x[i], g[i], bound(i), t)
+                 ? 0.0
+                 : x[i] - g[i] * inverse_theta + (k2 > 0 ? bfgs.row_times(i, u) : 0.0) -
+                       cauchy_i;
+    });
+    const double alpha = std::min(
+        1.0, -loops::maximum(reductions_, n_, [&](std::int64_t i) {
+          const double cauchy_i = x[i] - t * g[i];
+          return d[i] < 0.0 ? -(bound(i) - cauchy_i) / d[i] : -infinity;
+        }));
+    loops::for_each(n_, [&](std::int64_t i) {
+      d[i] = at_bound(x[i], g[i], bound(i), t) ? bound(i) : x[i] - t * g[i] + alpha * d[i];
+    });
+    finish_direction();
+  }
+
+  // From x_bar in d: d <- max(x_bar, lower) - x, x_old <- x, and the slope g.d, |d|^2 and the
+  // largest feasible step along d. Returns whether d descends.
+  bool finish_direction() {
+    const double *x = x_, *g = g_.data();
+    double *d = d_.data(), *x_old = x_old_.data();
+    // The maximum is that of -(step to the bound), so that its negative is the smallest.
+    const auto s = loops::sums_and_max<2>(reductions_, n_, [&](std::int64_t i, double *sum,
+                                                              double &max) {
+      const double target = d[i] > bound(i) ? d[i] : bound(i);
+      const double di = target - x[i];
+      d[i] = di;
+      x_old[i] = x[i];
+      sum[0] += g[i] * di;
+      sum[1] += di * di;
+      const double limit = di < 0.0 ? -(bound(i) - x[i]) / di : -infinity;
+      max = max > limit ? max : limit;
+    });
+    slope_ = s[0];
+    direction_norm_ = std::sqrt(s[1]);
+    largest_step_ = std::isfinite(s[2]) ? std::min(-s[2], unbounded_step) : unbounded_step;
+    return slope_ < 0.0;
+  }
+
+  // Step 4: a line search along d from x_old for the strong Wolfe conditions, with the step
+  // at most the largest feasible one. The first iteration tries 1/|d| (capped at the
+  // largest step, 1 there, the paper's choice), later ones the unit step. On success x, its
+  // gradient (in trial_gradient_) and value_ are the accepted point's; otherwise x is back
+  // at x_old.
+  Search line_search(bool first) {
+    if (!std::isfinite(slope_) || !std::isfinite(direction_norm_)) return Search::not_finite;
+    if (!(slope_ < 0.0)) return Search::no_descent;
+    const double largest = first ? std::min(1.0, largest_step_) : largest_step_;
+    const double step = first ? std::min(1.0 / direction_norm_, largest) : std::min(1.0, largest);
+    StrongWolfeSearch search(sufficient_decrease, curvature_condition, interval_width);
+    StrongWolfeSearch::Outcome outcome = search.start(value_, slope_, step, largest);
+    for (int evaluation = 0; evaluation < evaluations_per_search; ++evaluation) {
+      move_to(search.step());
+      const double value = f_.value_and_gradient(x_, trial_gradient_.data());
+      const double slope = f_.dot(trial_gradient_.data(), d_.data());
+      if (!std::isfinite(value) || !std::isfinite(slope)) {
+        move_to(0.0);
+        return Search::not_finite;
+      }
+      outcome = search.next(change_of_value(value, slope, search.step()), slope);
+      const bool accepted = outcome == StrongWolfeSearch::Outcome::found ||
+                            (outcome == StrongWolfeSearch::Outcome::stuck &&
+                             search.sufficient_decrease());
+      if (accepted) {
+        value_ = value;
+        return Search::accepted;
+      }
+      if (outcome == StrongWolfeSearch::Outcome::stuck) break;
+    }
+    move_to(0.0);
+    return Search::failed;
+  }
+
+  // The value the search compares, phi(step). Near the minimum phi(step) - phi(0) falls
+  // below the rounding of phi itself, and the sufficient decrease condition can no longer be
+  // checked from values: there, as in Hager & Zhang's approximate Wolfe conditions (SIAM J.
+  // Optim. 16, 2005), the change is taken from the slopes by the trapezoidal rule,
+  // phi(0) + step (phi'(0) + phi'(step))/2, exact for a quadratic such as the hard wall's.
+  double change_of_value(double value, double slope, double step) const {
+    if (std::fabs(value - value_) > values_resolved * std::fabs(value_)) return value;
+    return value_ + 0.5 * step * (slope_ + slope);
+  }
+
+  // x <- max(x_old + step d, lower): the bound holds bitwise whatever the rounding.
+  void move_to(double step) {
+    const double *x_old = x_old_.data(), *d = d_.data();
+    double *x = x_;
+    loops::for_each(n_, [&](std::int64_t i) {
+      const double moved = x_old[i] + step * d[i];
+      x[i] = moved > bound(i) ? moved : bound(i);
+    });
+  }
+
+  // Step 5: the pair s = x - x_old, y = g_new - g enters the memory unless the curvature
+  // condition fails; the accepted gradient becomes g.
+  void update_memory() {
+    bfgs_.add_pair(x_, x_old_, trial_gradient_.data(), g_);
+    std::swap(g_, trial_gradient_);
+  }
+
+  Formulation &f_;
+  std::int64_t n_;
+  // The bound of unknown i: lower_bound() on the first bounded_, none on the others.
+  double bound(std::int64_t i) const { return i < bounded_ ? lower_ : -infinity; }
+
+  std::int64_t bounded_;
+  double lower_;
+  const Reductions &reductions_;
+  double *x_;
+  double value_ = 0.0;
+  Field g_, trial_gradient_, x_old_, d_;
+  CompactBfgs bfgs_;
+  std::vector<double> u_;
+  double slope_ = 0.0, direction_norm_ = 0.0, largest_step_ = 0.0;
+  Indices list_;
+  Breakpoints heap_;
+};
+
+bool on_the_gap(const OptionValues &options) { return options.text("variable") == "gap"; }
+
+// L-BFGS-B keeps the unknowns in a box, but no mean-value equality: it serves penetration
+// control on either variable.
+Offer offer_for(const OptionValues &options) {
+  if (on_the_gap(options))
+    return {{Control::penetration},
+            {SubstrateKind::periodic, SubstrateKind::free},
+            {InteractionKind::hard_wall, InteractionKind::adhesive_hard_wall},
+            "variable = gap"};
+  return {{Control::penetration},
+          {SubstrateKind::periodic, SubstrateKind::free},
+          {InteractionKind::hard_wall},
+          "variable = pressure"};
+}
+
+template <class Variable>
+void run_on(System &system, Control control, double value, int memory, Monitor &monitor) {
+  Variable formulation(system, control, value);
+  lbfgsb(formulation, monitor, memory);
+  conclude(formulation, system, monitor);
+}
+
+void run(System &system, Control control, double value, const OptionValues &options,
+         Monitor &monitor) {
+  const int memory = static_cast<int>(options.number("memory"));
+  if (on_the_gap(options))
+    run_on<PrimalFormulation>(system, control, value, memory, monitor);
+  else
+    run_on<DualFormulation>(system, control, value, memory, monitor);
+}
+
+}  // namespace
+
+void lbfgsb(Formulation &f, Monitor &monitor, int memory) {
+  if (f.constrains_mean())
+    throw Error(Status::internal, "lbfgsb cannot keep a mean-value constraint");
+  Lbfgsb algorithm(f, memory);
+  algorithm.run(monitor);
+}
+
+AlgorithmSpec lbfgsb_algorithm() {
+  AlgorithmSpec spec;
+  spec.name = "lbfgsb";
+  spec.summary =
+      "Byrd, Lu, Nocedal & Zhu's limited-memory BFGS for bound constraints (L-BFGS-B, SIAM "
+      "J. Sci. Comput. 1995; thesis section 3.1.6) on the pressure (the complementary energy, "
+      "as for pk; no adhesion) or on the gap (the elastic energy plus the interaction "
+      "energy; with or without adhesion), under penetration control";
+  spec.controls = {Control::penetration};
+  spec.offer_for = offer_for;
+  spec.substrates = {SubstrateKind::periodic, SubstrateKind::free};
+  spec.interactions = {InteractionKind::hard_wall, InteractionKind::adhesive_hard_wall};
+  spec.options = {
+      {"variable", OptionType::choice, 0.0, 0.0, 0.0, false, {"pressure", "gap"},
+       "the unknown: pressure (the dual problem; no adhesion) or gap (the primal; with or "
+       "without adhesion); penetration control on either"},
+      {"memory", OptionType::integer, 5, 1, 100, false, {},
+       "the number of step and gradient-change pairs the quasi-Newton matrix keeps (16 bytes "
+       "per pixel each)"},
+  };
+  spec.run = run;
+  return spec;
+}
+
+}  // namespace asp

@@ -1,0 +1,53 @@
+// L-BFGS-B of Byrd, Lu, Nocedal & Zhu (SIAM J. Sci. Comput. 16, 1995; thesis section 3.1.6)
+// for an objective over x >= lower bound: a limited-memory BFGS model in compact form, the
+// generalized Cauchy point along the projected steepest-descent path, minimisation of the
+// model over the variables the Cauchy point left free (the direct primal method, with Morales
+// & Nocedal's projection, ACM TOMS 38, 2011), and a line search for the strong Wolfe
+// conditions. Without a bound (lower bound -infinity) it is plain L-BFGS. It needs only the
+// generic Formulation: here it runs on the primal (gap) or dual (pressure) formulation of the
+// hard wall under penetration control.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/aligned_field.hpp"
+#include "core/reductions.hpp"
+#include "solvers/compact_bfgs.hpp"
+#include "solvers/formulation.hpp"
+#include "solvers/monitor.hpp"
+#include "solvers/registry.hpp"
+
+namespace asp {
+
+AlgorithmSpec lbfgsb_algorithm();
+
+// The algorithm on any formulation without a mean-value constraint, keeping at most `memory`
+// pairs; leaves its last iterate in f.variable() (open for tests on small problems).
+void lbfgsb(Formulation &f, Monitor &monitor, int memory);
+
+// The generalized Cauchy point (step 2 of the algorithm, open for tests): along the
+// projected steepest-descent path x(t) = max(x - t g, lower), the first local minimiser t of
+// the model m(x(t)) = g.(x(t) - x) + (x(t) - x).B (x(t) - x)/2, B the compact matrix. The
+// breakpoints t_i = (x_i - lower)/g_i (g_i > 0) are visited in increasing order from a heap,
+// with the paper's updates of the slope and the curvature on each segment.
+struct CauchyPoint {
+  double t = 0.0;              // the point is max(x - t g, lower)
+  std::vector<double> c;       // W^T (x(t) - x)
+  std::int64_t at_bound = 0;   // unknowns at the bound at x(t)
+};
+using Indices = std::vector<std::int64_t, FieldAllocator<std::int64_t>>;
+struct Breakpoint {
+  double t;
+  std::int64_t i;
+};
+using Breakpoints = std::vector<Breakpoint, FieldAllocator<Breakpoint>>;
+// The bound x >= lower holds on the first `bounded` of the n unknowns, none on the others.
+// g must be the gradient of bfgs's last add_pair (its products with the pairs, W^T g, are
+// used); list and heap are work space, kept by the caller between iterations.
+CauchyPoint generalized_cauchy_point(const double *x, const double *g, std::int64_t n,
+                                     std::int64_t bounded, double lower,
+                                     const CompactBfgs &bfgs, const Reductions &reductions,
+                                     Indices &list, Breakpoints &heap);
+
+}  // namespace asp

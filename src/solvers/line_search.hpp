@@ -1,0 +1,60 @@
+// A line search for the strong Wolfe conditions, after More & Thuente (ACM TOMS 20, 1994),
+// the search of MINPACK-2's dcsrch that L-BFGS-B uses. It works by reverse communication: the
+// caller evaluates phi(step) = f(x + step d) and its slope phi'(step) = g(x + step d).d at the
+// step it proposes, and reports them back, until the search says the step is acceptable or
+// that it cannot find one. It knows nothing about the vectors themselves.
+//
+// The conditions, for 0 < step <= largest step:
+//   sufficient decrease  phi(step) <= phi(0) + decrease step phi'(0),
+//   curvature            |phi'(step)| <= curvature |phi'(0)|.
+#pragma once
+
+namespace asp {
+
+class StrongWolfeSearch {
+ public:
+  enum class Outcome {
+    evaluate,  // evaluate phi and phi' at step() and call next() with them
+    found,     // step() meets both conditions
+    // No further progress is possible (the interval of uncertainty fell below the rounding
+    // of the step, or the step sits at its bounds): step() holds the best point the search
+    // has, which meets the sufficient decrease condition if sufficient_decrease() says so.
+    stuck,
+  };
+
+  // decrease and curvature as above (0 < decrease < curvature < 1); relative_width stops the
+  // search when the interval of uncertainty is that small relative to its end.
+  StrongWolfeSearch(double decrease, double curvature, double relative_width)
+      : ftol_(decrease), gtol_(curvature), xtol_(relative_width) {}
+
+  // Starts a search from phi(0) = value, phi'(0) = slope < 0, with a first trial step in
+  // (0, largest]. Returns Outcome::evaluate.
+  Outcome start(double value, double slope, double first_step, double largest_step);
+  // phi and phi' at step(); returns what to do next.
+  Outcome next(double value, double slope);
+
+  double step() const { return step_; }
+  // Whether the last evaluated step meets the sufficient decrease condition.
+  bool sufficient_decrease() const { return last_decreases_; }
+
+ private:
+  // One step of the safeguarded interpolation: updates the interval [best, other] (ends
+  // with their values and slopes) with the trial, and proposes the next trial step.
+  void interpolate(double &best, double &f_best, double &g_best, double &other,
+                   double &f_other, double &g_other, double trial, double f_trial,
+                   double g_trial);
+
+  double ftol_, gtol_, xtol_;
+  double step_ = 0.0, smallest_ = 0.0, largest_ = 0.0;
+  double f0_ = 0.0, g0_ = 0.0, decrease_slope_ = 0.0;
+  // The interval of uncertainty: the best step so far and the other end.
+  double best_ = 0.0, f_best_ = 0.0, g_best_ = 0.0;
+  double other_ = 0.0, f_other_ = 0.0, g_other_ = 0.0;
+  double low_ = 0.0, high_ = 0.0;  // where the next trial may lie
+  double width_ = 0.0, previous_width_ = 0.0;
+  bool bracketed_ = false;
+  bool modified_ = true;  // the first stage, with the modified function
+  bool last_decreases_ = false;
+};
+
+}  // namespace asp
