@@ -27,39 +27,15 @@
 #include <utility>
 #include <vector>
 
+#include "bench/bench_common.hpp"
 #include "core/aligned_field.hpp"
 #include "core/grid.hpp"
 #include "physics/system.hpp"
 #include "physics/topography.hpp"
 #include "solvers/solver.hpp"
 
-namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-// Best of several timed batches of FFT pairs of shape nx x ny with the grid's plans: the
-// floor the solver's iterations compare with.
-double fft_pair_seconds(const asp::Grid &grid, std::int64_t nx, std::int64_t ny) {
-  asp::Field f(static_cast<std::size_t>(nx * ny));
-  for (std::size_t i = 0; i < f.size(); ++i) f[i] = static_cast<double>(i % 7);
-  asp::Spectrum s(static_cast<std::size_t>((nx / 2 + 1) * ny));
-  const asp::RealFft &fft = grid.real_fft(nx, ny);
-  const int repeats = std::max(3, static_cast<int>(2e7 / static_cast<double>(nx * ny)));
-  double best = 1e300;
-  for (int batch = 0; batch < 5; ++batch) {
-    const auto start = std::chrono::steady_clock::now();
-    for (int k = 0; k < repeats; ++k) {
-      fft.forward(f.data(), s.data());
-      fft.backward(s.data(), f.data());
-    }
-    best = std::min(best, seconds_since(start) / repeats);
-  }
-  return best;
-}
-
-}  // namespace
+using bench::fft_pair_seconds;
+using bench::seconds_since;
 
 int main(int argc, char **argv) {
   bool estimate = false, free = false, penetration_control = false;
@@ -175,9 +151,7 @@ int main(int argc, char **argv) {
       solver.solve(system, control, value);
       asp::SolveReport &best = recording ? with_history : r;
       if (run < 2 || solver.report().seconds < best.seconds) best = solver.report();
-      if (recording)
-        evaluations =
-            solver.history().back()[static_cast<int>(asp::HistoryColumn::evaluations)];
+      evaluations = static_cast<double>(solver.report().evaluations);
     }
     const double bytes_per_pixel =
         static_cast<double>(asp::field_bytes_peak() - before) / grid->n_pixels();
