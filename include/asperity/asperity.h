@@ -408,13 +408,14 @@ typedef struct asp_solver asp_solver;
  *   "bugnicourt"  Bugnicourt et al.'s constrained conjugate gradient (OUT-LIN, 2018; hard
  *                 wall), on the pressure (option "variable" = "pressure", the default;
  *                 controls as "pk"; no adhesion; periodic or free substrate) or on the gap
- *                 ("gap"; controls ASP_CONTROL_MEAN_GAP, ASP_CONTROL_PENETRATION; with or
- *                 without adhesion, see asp_system_set_adhesion; periodic substrate only).
+ *                 ("gap"; controls ASP_CONTROL_MEAN_GAP, ASP_CONTROL_PENETRATION, on a free
+ *                 substrate penetration only; with or without adhesion, see
+ *                 asp_system_set_adhesion).
  *                 Faster than "pk" near full contact. Stops as stalled also when it has no
  *                 descent direction left.
- *   "lbfgsb"      Byrd, Lu, Nocedal & Zhu's L-BFGS-B (1995; hard wall, no adhesion,
- *                 periodic or free substrate) on the pressure (option "variable" =
- *                 "pressure", the default) or on the gap ("gap"), under
+ *   "lbfgsb"      Byrd, Lu, Nocedal & Zhu's L-BFGS-B (1995; hard wall, periodic or free
+ *                 substrate) on the pressure (option "variable" = "pressure", the default;
+ *                 no adhesion) or on the gap ("gap"; with or without adhesion), under
  *                 ASP_CONTROL_PENETRATION only: it keeps the unknowns in bounds but cannot
  *                 impose a mean, so mean-pressure and mean-gap control are refused with
  *                 ASP_ERR_UNSUPPORTED. Option "memory" (integer in [1, 100], default 5): the
