@@ -68,6 +68,26 @@ inline asp::SolveReport solve_pk(asp::System &system, asp::Control control, doub
   return solve_with("pk", system, control, value, tolerance, max_iterations);
 }
 
+// Vector arithmetic of the tests, for any containers of doubles of one length.
+template <class A, class B>
+double dot(const A &a, const B &b) {
+  double s = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) s += a[i] * b[i];
+  return s;
+}
+template <class A>
+double max_abs(const A &a) {
+  double m = 0.0;
+  for (double v : a) m = std::fmax(m, std::fabs(v));
+  return m;
+}
+template <class A, class B>
+double max_abs_difference(const A &a, const B &b) {
+  double m = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) m = std::fmax(m, std::fabs(a[i] - b[i]));
+  return m;
+}
+
 // Distance of x from the origin on a periodic interval of length l, in [0, l/2].
 inline double periodic_distance(double x, double l) {
   double d = std::fmod(std::fabs(x), l);

@@ -23,16 +23,8 @@ using asp::Control;
 using asp_test::pi;
 using Vector = std::vector<double>;
 
-double dot(const Vector &a, const Vector &b) {
-  double s = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) s += a[i] * b[i];
-  return s;
-}
-double max_abs(const Vector &a) {
-  double m = 0.0;
-  for (double v : a) m = std::max(m, std::fabs(v));
-  return m;
-}
+using asp_test::dot;
+using asp_test::max_abs;
 Vector random_vector(std::size_t n, std::uint64_t seed, double low) {
   asp::Random random(seed);
   Vector v(n);

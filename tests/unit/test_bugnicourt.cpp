@@ -33,17 +33,8 @@ void PrintTo(const Case &c, std::ostream *os) {
 
 class AgreesWithPolonskyKeer : public ::testing::TestWithParam<Case> {};
 
-double max_abs_difference(const asp::Field &a, const asp::Field &b) {
-  double m = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) m = std::max(m, std::fabs(a[i] - b[i]));
-  return m;
-}
-
-double max_abs(const asp::Field &a) {
-  double m = 0.0;
-  for (double v : a) m = std::max(m, std::fabs(v));
-  return m;
-}
+using asp_test::max_abs;
+using asp_test::max_abs_difference;
 
 // Both solvers to an error of 1e-11 (residual gaps below 1e-11 reference pressures over the
 // pixel stiffness), above both rounding floors (Bugnicourt's levels off near 1.3e-12 on the

@@ -202,11 +202,7 @@ Vector plus(const Vector &x, double h, const Vector &d) {
   for (std::size_t i = 0; i < x.size(); ++i) y[i] = x[i] + h * d[i];
   return y;
 }
-double max_abs(const Vector &v) {
-  double m = 0.0;
-  for (double e : v) m = std::max(m, std::fabs(e));
-  return m;
-}
+using asp_test::max_abs;
 double norm(const Vector &v) {
   double s = 0.0;
   for (double e : v) s += e * e;

@@ -24,17 +24,8 @@ namespace {
 
 using asp::Control;
 
-double max_abs_difference(const asp::Field &a, const asp::Field &b) {
-  double m = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) m = std::max(m, std::fabs(a[i] - b[i]));
-  return m;
-}
-
-double max_abs(const asp::Field &a) {
-  double m = 0.0;
-  for (double v : a) m = std::max(m, std::fabs(v));
-  return m;
-}
+using asp_test::max_abs;
+using asp_test::max_abs_difference;
 
 struct Case {
   const char *name;

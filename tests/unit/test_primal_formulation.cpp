@@ -19,16 +19,8 @@ namespace {
 using asp::Control;
 using Vector = std::vector<double>;
 
-double dot(const Vector &a, const Vector &b) {
-  double s = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) s += a[i] * b[i];
-  return s;
-}
-double max_abs(const Vector &a) {
-  double m = 0.0;
-  for (double v : a) m = std::max(m, std::fabs(v));
-  return m;
-}
+using asp_test::dot;
+using asp_test::max_abs;
 
 struct Scene {
   std::shared_ptr<asp::Grid> grid;

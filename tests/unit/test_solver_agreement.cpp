@@ -50,17 +50,8 @@ Outcome solve(asp::System &system, const Request &r, double penetration, double 
   return o;
 }
 
-double largest_difference(const std::vector<double> &a, const std::vector<double> &b) {
-  double m = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) m = std::max(m, std::fabs(a[i] - b[i]));
-  return m;
-}
-
-double largest(const std::vector<double> &a) {
-  double m = 0.0;
-  for (double v : a) m = std::max(m, std::fabs(v));
-  return m;
-}
+using asp_test::max_abs;
+using asp_test::max_abs_difference;
 
 // A rough surface on a free 48^2 box at about 10 % contact. The problem is a strictly convex
 // quadratic on either variable, so the states differ only by what residuals of 1e-11 (of the
@@ -80,13 +71,13 @@ TEST(SolverAgreement, FreeSubstrateEverySolverEveryVariable) {
   const Outcome reference = solve(system, {"pk", "pressure"}, penetration, 1e-11);
   ASSERT_GT(reference.contact, 0.03);
   ASSERT_LT(reference.contact, 0.3);
-  const double peak = largest(reference.pressure);
+  const double peak = max_abs(reference.pressure);
   for (const Request r : {Request{"bugnicourt", "pressure"}, Request{"bugnicourt", "gap"},
                           Request{"lbfgsb", "pressure"}, Request{"lbfgsb", "gap"}}) {
     const Outcome o = solve(system, r, penetration, 1e-11);
     const std::string name = std::string(r.algorithm) + " on the " + r.variable;
-    EXPECT_LE(largest_difference(o.pressure, reference.pressure), 1e-8 * peak) << name;
-    EXPECT_LE(largest_difference(o.gap, reference.gap), 1e-8 * range) << name;
+    EXPECT_LE(max_abs_difference(o.pressure, reference.pressure), 1e-8 * peak) << name;
+    EXPECT_LE(max_abs_difference(o.gap, reference.gap), 1e-8 * range) << name;
     EXPECT_NEAR(o.energy, reference.energy, 1e-9 * reference.energy) << name;
     EXPECT_EQ(o.contact, reference.contact) << name;
     const bool primal = std::string(r.variable) == "gap";
@@ -113,7 +104,7 @@ TEST(SolverAgreement, AdhesiveRoughSceneOnTheGap) {
   const Outcome bugnicourt = solve(system, {"bugnicourt", "gap"}, penetration, 1e-10);
   const Outcome lbfgsb = solve(system, {"lbfgsb", "gap"}, penetration, 1e-10);
   EXPECT_GT(bugnicourt.contact, 0.01);
-  EXPECT_LE(largest_difference(bugnicourt.gap, lbfgsb.gap), 1e-7 * system.height_range());
+  EXPECT_LE(max_abs_difference(bugnicourt.gap, lbfgsb.gap), 1e-7 * system.height_range());
   EXPECT_NEAR(bugnicourt.energy, lbfgsb.energy, 1e-9 * std::fabs(bugnicourt.energy));
   EXPECT_EQ(bugnicourt.contact, lbfgsb.contact);
   EXPECT_LT(system.interaction_energy(), 0.0);
@@ -135,7 +126,7 @@ TEST(SolverAgreement, FreeGapFormulationGradientByFiniteDifferences) {
   std::vector<double> x(static_cast<std::size_t>(n)), g(x.size()), scratch(x.size());
   for (std::int64_t i = 0; i < n; ++i) x[i] = 0.1 * std::sin(0.7 * static_cast<double>(i));
   f.value_and_gradient(x.data(), g.data());
-  const double scale = largest(g), step = 1e-4;
+  const double scale = max_abs(g), step = 1e-4;
   for (std::int64_t i = 0; i < n; i += 7) {
     std::vector<double> plus = x, minus = x;
     plus[i] += step;
