@@ -108,8 +108,9 @@ double PrimalFormulation::quadratic_part(const double *x, double *gradient) {
 }
 
 double PrimalFormulation::quadratic_part_at_zero(double *out) {
-  const Field zero = grid_.make_field();
-  return quadratic_part(zero.data(), out);
+  // out doubles as the zero iterate: it is read (into the displacement) before it is written.
+  loops::for_each(n_, [&](std::int64_t i) { out[i] = 0.0; });
+  return quadratic_part(out, out);
 }
 
 double PrimalFormulation::quadratic_part_product(const double *direction, double *product) {
