@@ -41,8 +41,9 @@ IterationState observe(const Formulation &f, const double *x, const double *g, d
 // step the bound did not cut follows from the Hessian product already made for the step
 // length, in the pass that moves the iterate; it is evaluated after a cut, every few steps,
 // and before convergence is declared. An iteration is then one Hessian product (whose pass
-// over the spectrum also gives the curvature d.Hd) and two passes over the unknowns (a third,
-// a sum, under a mean constraint).
+// over the spectrum also gives the curvature d.Hd) and two passes over the unknowns; under a
+// mean constraint two more: the sum that gives the factor restoring the mean, and beta's sums
+// once the multiplier is known.
 void bugnicourt(Formulation &f, Monitor &monitor) {
   const BugnicourtPasses passes(f);
   const auto n = static_cast<std::size_t>(f.size());
