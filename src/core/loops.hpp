@@ -9,6 +9,7 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <utility>
 
 #include "core/reductions.hpp"
 
@@ -95,6 +96,25 @@ template <class Indices, class Keep>
 void select(std::int64_t n, Keep &&keep, Indices &out) {
   for (std::int64_t i = 0; i < n; ++i)
     if (keep(i)) out.push_back(i);
+}
+
+// K sums and M maxima: body(i, sum, max) adds to sum[0..K-1] and raises max[0..M-1]. The
+// maximum of an empty range is -infinity; as for sums_and_max, a NaN offered to a maximum may
+// be dropped.
+template <int K, int M, class Body>
+std::pair<std::array<double, K>, std::array<double, M>> sums_and_maxima(
+    const Reductions &reductions, std::int64_t n, Body &&body) {
+  double sum[K] = {};
+  double max[M];
+  for (int m = 0; m < M; ++m) max[m] = -std::numeric_limits<double>::infinity();
+#pragma omp simd reduction(+ : sum[:K]) reduction(max : max[:M])
+  for (std::int64_t i = 0; i < n; ++i) body(i, sum, max);
+  reductions.combine_sums(sum, K);
+  reductions.combine_maxima(max, M);
+  std::pair<std::array<double, K>, std::array<double, M>> out;
+  for (int k = 0; k < K; ++k) out.first[k] = sum[k];
+  for (int m = 0; m < M; ++m) out.second[m] = max[m];
+  return out;
 }
 
 }  // namespace loops

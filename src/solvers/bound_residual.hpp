@@ -5,7 +5,10 @@
 // the gradient counts relative to its mean over the free unknowns, the constraint's multiplier.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
+#include <initializer_list>
+#include <limits>
 
 #include "core/reductions.hpp"
 
@@ -22,5 +25,35 @@ double mean_over_free(const Reductions &reductions, std::int64_t n, const double
 double bound_residual(const Reductions &reductions, std::int64_t n, std::int64_t bounded,
                       const double *x, const double *gradient, double lower,
                       bool mean_constrained);
+
+// The residual gathered element by element before the multiplier is known, so that a solver
+// can fuse it into a pass of its own and still measure exactly what bound_residual measures
+// (which is built from the same two functions). Per unknown, gather_bound_residual raises two
+// maxima, which start at -infinity: the largest gradient over the free unknowns and the
+// largest negated gradient over all; and it adds g - g to a sum, which stays 0 unless an entry
+// is not finite. bound_residual_at then gives the largest residual at the multiplier `shift`,
+//     max(max_free g - shift, shift - min g, 0)
+// (|g - shift| on the free unknowns is the larger of g - shift and shift - g; on the bound
+// only shift - g counts, and only where it is positive). It equals the largest of the
+// residuals taken one by one exactly, not only to rounding: rounding is monotone, so the
+// largest fl(g_i - shift) is fl(max_i g_i - shift).
+constexpr int bound_residual_maxima = 2;
+
+inline void gather_bound_residual(double x, double gradient, double lower, double *maxima,
+                                  double &finite_check) {
+  const double g = gradient;
+  maxima[0] = (x > lower) & (g > maxima[0]) ? g : maxima[0];
+  maxima[1] = -g > maxima[1] ? -g : maxima[1];
+  finite_check += g - g;
+}
+
+inline double bound_residual_at(const double *maxima, double finite_check, double shift) {
+  if (!(finite_check == 0.0) || !std::isfinite(shift))
+    return std::numeric_limits<double>::quiet_NaN();
+  double largest = 0.0;
+  for (const double v : {maxima[0] - shift, shift + maxima[1]})
+    largest = v > largest ? v : largest;
+  return largest;
+}
 
 }  // namespace asp

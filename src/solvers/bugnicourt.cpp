@@ -1,13 +1,13 @@
 #include "solvers/bugnicourt.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdint>
+#include <utility>
 
 #include "core/error.hpp"
 #include "core/loops.hpp"
-#include "solvers/bound_residual.hpp"
+#include "solvers/bugnicourt_passes.hpp"
 #include "solvers/dual_formulation.hpp"
 #include "solvers/primal_formulation.hpp"
 #include "solvers/solver.hpp"
@@ -23,134 +23,33 @@ constexpr int updates_between_evaluations = 32;
 // the step is far below what would still change the iterate.
 constexpr int max_halvings = 30;
 
-// What a step did to the iterate: the factor that restored the mean (1 without a mean
-// constraint), and whether the bound cut it (then the gradient must be evaluated).
-struct Move {
-  double scale;
-  bool cut;
-};
-
-// The passes over the unknowns that the algorithm's steps need; x >= lower is the bound on
-// the first `bounded` unknowns, the others are free. The unknowns are pixels (real space),
-// whose inner product is the plain sum.
-class Steps {
- public:
-  explicit Steps(Formulation &f)
-      : f_(f),
-        n_(f.size()),
-        bounded_(f.bounded_size()),
-        lower_(f.lower_bound()),
-        reductions_(f.reductions()) {
-    // The mean is restored by scaling every unknown, which keeps the followed gradient exact;
-    // it is the mean of the bounded ones that the constraint fixes.
-    if (f.constrains_mean() && bounded_ != n_)
-      throw Error(Status::internal,
-                  "bugnicourt: a mean constraint on some unknowns only is not supported");
-  }
-
-  // x <- max(from + alpha d, lower), then the mean restored by a common factor (a uniform
-  // iterate if nothing is left above the bound). from may be x.
-  Move move(const double *from, double *x, const double *d, double alpha) const {
-    const double lower = lower_;
-    const std::int64_t bounded = bounded_;
-    const auto s = loops::sums<2>(reductions_, n_, [&](std::int64_t i, double *sum) {
-      const double moved = from[i] + alpha * d[i];
-      const bool cut = (i < bounded) & !(moved > lower);
-      x[i] = cut ? lower : moved;
-      sum[0] += x[i];
-      sum[1] += cut & (moved < lower) ? 1.0 : 0.0;
-    });
-    Move m{1.0, s[1] > 0.0};
-    if (!f_.constrains_mean()) return m;
-    const double target = f_.mean_target() * static_cast<double>(n_);
-    if (s[0] > 0.0) {
-      m.scale = target / s[0];
-      const double factor = m.scale;
-      loops::for_each(n_, [&](std::int64_t i) { x[i] *= factor; });
-    } else {
-      const double uniform = f_.mean_target();
-      loops::for_each(n_, [&](std::int64_t i) { x[i] = uniform; });
-      m.cut = true;
-    }
-    return m;
-  }
-
-  // The gradient g made a direction of the feasible set, into r: its mean over the free
-  // unknowns removed (the multiplier of the mean constraint), zero where x sits on the bound
-  // and g pushes it out of the feasible set, and its mean over the entries left removed again
-  // so that a step along it keeps the mean. Then the new direction d <- -r + beta d (0 where
-  // the bound rule zeroed r), with beta = r.h / curvature (h = H d_old), or 0 for the first
-  // or a restarted direction (curvature 0). Three passes: the second also sums what beta
-  // needs, so that the last writes r and d together.
-  void project_and_direct(const double *x, const double *g, const double *h, double curvature,
-                          double *r, double *d) const {
-    const double lower = lower_;
-    const std::int64_t bounded = bounded_;
-    const bool mean = f_.constrains_mean();
-    const double shift = mean ? mean_over_free(reductions_, n_, x, g, lower) : 0.0;
-    const bool conjugate = curvature > 0.0;
-    const auto s = loops::sums<4>(reductions_, n_, [&](std::int64_t i, double *sum) {
-      const double ri = g[i] - shift;
-      const bool blocked = (i < bounded) & (x[i] <= lower) & (ri > 0.0);
-      r[i] = blocked ? 0.0 : ri;
-      const double nonzero = r[i] != 0.0 ? 1.0 : 0.0;
-      sum[0] += r[i];
-      sum[1] += nonzero;
-      sum[2] += conjugate ? r[i] * h[i] : 0.0;
-      sum[3] += conjugate ? nonzero * h[i] : 0.0;
-    });
-    const double again = mean && s[1] > 0.0 ? s[0] / s[1] : 0.0;
-    const double beta = conjugate ? (s[2] - again * s[3]) / curvature : 0.0;
-    loops::for_each(n_, [&](std::int64_t i) {
-      const bool zero = r[i] == 0.0;
-      r[i] = zero ? 0.0 : r[i] - again;
-      d[i] = (i < bounded) & (x[i] <= lower) & zero ? 0.0 : -r[i] + beta * d[i];
-    });
-  }
-
-  // r.d and d.h in one pass: the descent along d and its curvature.
-  std::array<double, 2> descent_and_curvature(const double *r, const double *d,
-                                              const double *h) const {
-    return loops::sums<2>(reductions_, n_, [&](std::int64_t i, double *sum) {
-      sum[0] += r[i] * d[i];
-      sum[1] += d[i] * h[i];
-    });
-  }
-
-  // d <- -r + beta d where r is not zero by the bound rule, 0 there.
-  void new_direction(const double *x, const double *r, double beta, double *d) const {
-    const double lower = lower_;
-    const std::int64_t bounded = bounded_;
-    loops::for_each(n_, [&](std::int64_t i) {
-      const bool blocked = (i < bounded) & (x[i] <= lower) & (r[i] == 0.0);
-      d[i] = blocked ? 0.0 : -r[i] + beta * d[i];
-    });
-  }
-
-  // g <- s (g + alpha h) + (1 - s) c: the gradient after a step the bound did not cut.
-  void follow(double *g, const double *h, const double *c, double alpha, double scale) const {
-    loops::for_each(n_, [&](std::int64_t i) {
-      g[i] = scale * (g[i] + alpha * h[i]) + (1.0 - scale) * c[i];
-    });
-  }
-
- private:
-  Formulation &f_;
-  std::int64_t n_;
-  std::int64_t bounded_;
-  double lower_;
-  const Reductions &reductions_;
-};
+// The state the monitor sees at x with the gradient g (before projection), its error and the
+// value.
+IterationState observe(const Formulation &f, const double *x, const double *g, double error,
+                       double value, const Monitor &monitor) {
+  IterationState state;
+  state.error = error;
+  state.objective =
+      monitor.wants_objective() ? f.reported_objective(x, g, value) * f.energy_unit() : 0.0;
+  state.contact_fraction = monitor.wants_objective() ? f.contact_fraction(x) : 0.0;
+  state.evaluations = f.counters().evaluations;
+  state.transforms = f.counters().transforms;
+  return state;
+}
 
 // Alg. 4: exact step along d (the objective is quadratic), projection onto the bound, the
 // mean restored, then the conjugate direction with beta = r.Hd / d.Hd. The gradient g of a
 // step the bound did not cut follows from the Hessian product already made for the step
-// length; it is evaluated after a cut, every few steps, and before convergence is declared.
+// length, in the pass that moves the iterate; it is evaluated after a cut, every few steps,
+// and before convergence is declared. An iteration is then one Hessian product (whose pass
+// over the spectrum also gives the curvature d.Hd) and two passes over the unknowns; under a
+// mean constraint two more: the sum that gives the factor restoring the mean, and beta's sums
+// once the multiplier is known.
 void bugnicourt(Formulation &f, Monitor &monitor) {
-  const Steps steps(f);
+  const BugnicourtPasses passes(f);
   const auto n = static_cast<std::size_t>(f.size());
   double *x = f.variable().data();
-  Field g(n), c(n), r(n), d(n), h(n);
+  Field g(n), c(n), d(n), h(n);
   const double value_at_zero = f.gradient_at_zero(c.data());
   // f(x) = x.(g + c)/2 + f(0) for the history, without an evaluation.
   const auto value_of = [&]() {
@@ -158,113 +57,179 @@ void bugnicourt(Formulation &f, Monitor &monitor) {
                ? 0.5 * (f.dot(x, g.data()) + f.dot(x, c.data())) + value_at_zero
                : 0.0;
   };
+  // The gradient at x, with the value only for the history.
+  const auto evaluate = [&]() {
+    if (monitor.wants_objective()) return f.value_and_gradient(x, g.data());
+    f.gradient(x, g.data());
+    return 0.0;
+  };
+  const auto gradient = [&](std::int64_t i) { return g[i]; };
+  const auto product = [&](std::int64_t i) { return h[i]; };
+  const auto nothing = [](std::int64_t, double) { return 0.0; };
 
-  const double value = f.value_and_gradient(x, g.data());
-  if (monitor.should_stop(0, observe(f, x, g.data(), value, monitor))) return;
-  steps.project_and_direct(x, g.data(), h.data(), 0.0, r.data(), d.data());
+  double value = evaluate();
+  Projection p = passes.gather(x, gradient, product, 0.0, 0.0);
+  if (monitor.should_stop(0, observe(f, x, g.data(), p.error, value, monitor))) return;
+  double descent = passes.direct(x, gradient, p, d.data(), nothing)[0];
 
   int followed = 0;
   for (std::int64_t iteration = 1;; ++iteration) {
-    f.hessian_product(d.data(), h.data());
-    std::array<double, 2> along = steps.descent_and_curvature(r.data(), d.data(), h.data());
-    if (!(along[0] < 0.0 && along[1] > 0.0)) {
+    double curvature = f.quadratic_part_product(d.data(), h.data());
+    if (!(descent < 0.0 && curvature > 0.0)) {
       // Not a descent direction after the projection changed the free set: restart from
       // the projected steepest descent, which is one unless the iterate is stationary.
-      steps.new_direction(x, r.data(), 0.0, d.data());
-      f.hessian_product(d.data(), h.data());
-      along = steps.descent_and_curvature(r.data(), d.data(), h.data());
-      if (!(along[1] > 0.0)) {
+      Projection steepest = p;
+      steepest.beta = 0.0;
+      descent = passes.direct(x, gradient, steepest, d.data(), nothing)[0];
+      curvature = f.quadratic_part_product(d.data(), h.data());
+      if (!(curvature > 0.0)) {
         monitor.declare_stalled();
         return;
       }
     }
-    const double descent = along[0], curvature = along[1];
     const double alpha = -descent / curvature;
-    const Move move = steps.move(x, x, d.data(), alpha);
-
+    const Step step = passes.step(x, d.data(), alpha, g.data(), h.data(), c.data(),
+                                  followed < updates_between_evaluations, p.shift, curvature);
     // The gradient is evaluated after a cut, when the followed one is due for a refresh, and
     // before the monitor may call the iterate converged (or see a non-finite error).
-    IterationState state;
-    const bool follow = !move.cut && followed < updates_between_evaluations;
-    if (follow) {
-      steps.follow(g.data(), h.data(), c.data(), alpha, move.scale);
+    if (step.followed) {
       ++followed;
-      state = observe(f, x, g.data(), value_of(), monitor);
+      p = step.projection;
+      value = value_of();
     }
-    if (!follow || !(state.error > monitor.tolerance())) {
+    if (!step.followed || !(p.error > monitor.tolerance())) {
       followed = 0;
-      state = observe(f, x, g.data(), f.value_and_gradient(x, g.data()), monitor);
+      value = evaluate();
+      p = passes.gather(x, gradient, product, curvature, p.shift);
     }
-    if (monitor.should_stop(iteration, state)) return;
-    steps.project_and_direct(x, g.data(), h.data(), curvature, r.data(), d.data());
+    if (monitor.should_stop(iteration, observe(f, x, g.data(), p.error, value, monitor))) return;
+    descent = passes.direct(x, gradient, p, d.data(), nothing)[0];
   }
 }
 
-// Alg. 4 for an objective that is not quadratic (the gap with adhesion): the gradient is
-// evaluated after every step, and the step length is safeguarded. OUT-LIN's step is the
-// minimiser of the second-order model along d, -r.d / d.H d with the Hessian H at the
-// iterate (Bugnicourt et al. linearise the adhesive term's residual within the step); it is
-// taken when that curvature is positive and the step lowers the objective. Otherwise (the
-// curvature of strong adhesion can be negative, or the model can overshoot where phi'' grows
-// along the step) the step is -r.d / bound, with the formulation's upper bound on the
-// curvature along the whole line: for the hard wall with adhesion, whose adhesive energy is
-// concave, the elastic curvature d.K d, under which the objective lies below its quadratic
-// model, so that this step lowers it for certain (before the bound cuts it, as for the
-// quadratic). The conjugate direction uses beta = r.Hd / d.Hd as before, restarting where
-// that curvature is not positive.
-void bugnicourt_nonquadratic(Formulation &f, Monitor &monitor) {
-  const Steps steps(f);
+// Alg. 4 for a separable objective f(x) = Q(x) + sum_i psi(x_i) with Q quadratic (the gap
+// with adhesion, psi the adhesive energy), with a safeguarded step. OUT-LIN's step is the
+// minimiser of the second-order model along d, -r.d / d.H d with the Hessian H = Q + psi'' at
+// the iterate (Bugnicourt et al. linearise the adhesive term's residual within the step); it
+// is taken when that curvature is positive and the step lowers the objective. Otherwise (the
+// curvature of strong adhesion can be negative, or the model can overshoot where psi'' grows
+// along the step) the step is -r.d / d.Q d: for the hard wall with adhesion, whose adhesive
+// energy is concave, Q bounds the curvature along the whole line, so that the objective lies
+// below its quadratic model and this step lowers it for certain (before the bound cuts it,
+// as for the quadratic); should a cut make it rise, it is halved. The conjugate direction
+// uses beta = r.Hd / d.Hd (H at the iterate the step started from), restarting where that
+// curvature is not positive.
+// Q's gradient q is followed from Q's Hessian product as in the quadratic case, and the local
+// term is evaluated element by element (one exponential per unknown, its state, gives psi,
+// psi' and psi''), so that the objective at a trial point needs no transform unless the bound
+// cut the step: a trial is one pass, writing the trial point, q there and the states into
+// trial arrays that become the iterate's when the step is taken.
+void bugnicourt_separable(Formulation &f, const LocalTerm &psi, Monitor &monitor) {
+  const BugnicourtPasses passes(f);
   const auto n = static_cast<std::size_t>(f.size());
-  double *x = f.variable().data();
-  Field g(n), start(n), r(n), d(n), h(n);
+  Field &variable = f.variable();
+  Field y_field(n), q_field(n), qy_field(n), c(n), d(n), k(n), e_field(n), ey_field(n);
+  // The iterate, q and the states there, and the trial arrays (after a step, the previous
+  // iterate's), exchanged when a step is taken.
+  double *x = variable.data(), *y = y_field.data();
+  double *q = q_field.data(), *qy = qy_field.data();
+  double *e = e_field.data(), *ey = ey_field.data();
+  const double value_per_state = psi.value_per_state(), slope = psi.slope_per_state(),
+               bend = psi.curvature_per_state();
+  f.quadratic_part_at_zero(c.data());
 
-  double value = f.value_and_gradient(x, g.data());
-  if (monitor.should_stop(0, observe(f, x, g.data(), value, monitor))) return;
-  steps.project_and_direct(x, g.data(), h.data(), 0.0, r.data(), d.data());
+  const auto gradient = [&](std::int64_t i) { return q[i] + slope * e[i]; };
+  // (H d)_i at the iterate the last step started from, whose states ey then holds.
+  const auto product = [&](std::int64_t i) { return k[i] + bend * ey[i] * d[i]; };
+  const auto none = [](std::int64_t) { return 0.0; };
+  // psi''(x_i) d_i^2: the local term's part of the curvature along the new direction.
+  const auto local_curvature = [&](std::int64_t i, double di) { return bend * e[i] * di * di; };
+  // The history's objective needs the gradient: written into the trial array qy, free until
+  // the next trial.
+  const auto state_at = [&](double error, double value) {
+    if (monitor.wants_objective())
+      loops::for_each(static_cast<std::int64_t>(n), [&](std::int64_t i) { qy[i] = gradient(i); });
+    return observe(f, x, qy, error, value, monitor);
+  };
+  // Every way out leaves the iterate in the formulation's variable.
+  const auto settle = [&]() {
+    if (x != variable.data()) std::copy(x, x + n, variable.data());
+  };
 
+  double value = f.quadratic_part(x, q) + value_per_state * passes.local_states(x, psi, e);
+  double states = 0.0;
+  Projection p = passes.gather(x, gradient, none, 0.0, 0.0);
+  if (monitor.should_stop(0, state_at(p.error, value))) return settle();
+  auto along = passes.direct(x, gradient, p, d.data(), local_curvature);
+
+  int followed = 0;
   for (std::int64_t iteration = 1;; ++iteration) {
-    f.hessian_product(d.data(), h.data());
-    std::array<double, 2> along = steps.descent_and_curvature(r.data(), d.data(), h.data());
-    double bound = f.curvature_bound(d.data(), h.data());
+    double bound = f.quadratic_part_product(d.data(), k.data());
     if (!(along[0] < 0.0 && bound > 0.0)) {
       // Not a descent direction after the projection changed the free set: restart from
       // the projected steepest descent, which is one unless the iterate is stationary.
-      steps.new_direction(x, r.data(), 0.0, d.data());
-      f.hessian_product(d.data(), h.data());
-      along = steps.descent_and_curvature(r.data(), d.data(), h.data());
-      bound = f.curvature_bound(d.data(), h.data());
+      Projection steepest = p;
+      steepest.beta = 0.0;
+      along = passes.direct(x, gradient, steepest, d.data(), local_curvature);
+      bound = f.quadratic_part_product(d.data(), k.data());
       if (!(along[0] < 0.0 && bound > 0.0)) {
         monitor.declare_stalled();
-        return;
+        return settle();
       }
     }
-    const double descent = along[0], curvature = along[1];
+    const double descent = along[0], curvature = bound + along[1];
     const double safe = -descent / bound;
-    std::copy(x, x + n, start.data());
     const bool newton = curvature > 0.0 && curvature < bound;
-    steps.move(start.data(), x, d.data(), newton ? -descent / curvature : safe);
-    double trial = f.value_and_gradient(x, g.data());
-    // A rise within 1e-12 of the values is taken for rounding, and the step kept. Where the
+
+    // The change of the objective from x to the trial point x + alpha d (cut and rescaled),
+    // which goes into the trial arrays.
+    bool cut = false;
+    const auto trial = [&](double alpha) {
+      const Trial t = passes.trial(x, d.data(), alpha, q, k.data(), c.data(), e, psi, y, qy, ey);
+      cut = t.cut;
+      states = t.states;
+      double quadratic_change = t.quadratic_change;
+      if (t.cut) {
+        f.quadratic_part(y, qy);
+        quadratic_change = passes.quadratic_change(x, y, q, qy);
+      }
+      return quadratic_change + value_per_state * t.state_change;
+    };
+    double change = trial(newton ? -descent / curvature : safe);
+    // A rise within 1e-12 of the value is taken for rounding, and the step kept. Where the
     // elastic and adhesive energies cancel, rounding can exceed that; a good step is then
-    // replaced by the safe one, which costs an evaluation but never the descent.
+    // replaced by the safe one, which costs a pass but never the descent.
     const double slack = 1e-12 * std::fabs(value);
-    if (newton && !(trial <= value + slack)) {
-      steps.move(start.data(), x, d.data(), safe);
-      trial = f.value_and_gradient(x, g.data());
-    }
+    if (newton && !(change <= slack)) change = trial(safe);
     // The safe step descends before the bound cuts it; a cut can spoil that, but not for
     // short steps (the cut then only drops components along which r.d >= 0). So it is
     // halved while it raises the objective, a few times at most.
     double alpha = safe;
-    for (int halving = 0; halving < max_halvings && !(trial <= value + slack); ++halving) {
+    for (int halving = 0; halving < max_halvings && !(change <= slack); ++halving) {
       alpha *= 0.5;
-      steps.move(start.data(), x, d.data(), alpha);
-      trial = f.value_and_gradient(x, g.data());
+      change = trial(alpha);
     }
-    value = trial;
-    if (monitor.should_stop(iteration, observe(f, x, g.data(), value, monitor))) return;
-    steps.project_and_direct(x, g.data(), h.data(), curvature > 0.0 ? curvature : 0.0,
-                             r.data(), d.data());
+    std::swap(x, y);
+    std::swap(q, qy);
+    std::swap(e, ey);
+    value += change;
+
+    // q is evaluated after a cut (the trial did), when the followed one is due for a
+    // refresh, and before the monitor may call the iterate converged.
+    const auto refresh = [&]() {
+      followed = 0;
+      value = f.quadratic_part(x, q) + value_per_state * states;
+    };
+    followed = cut ? 0 : followed + 1;
+    if (followed >= updates_between_evaluations) refresh();
+    const double beta_curvature = curvature > 0.0 ? curvature : 0.0;
+    p = passes.gather(x, gradient, product, beta_curvature, p.shift);
+    if (followed > 0 && !(p.error > monitor.tolerance())) {
+      refresh();
+      p = passes.gather(x, gradient, product, beta_curvature, p.shift);
+    }
+    if (monitor.should_stop(iteration, state_at(p.error, value))) return settle();
+    along = passes.direct(x, gradient, p, d.data(), local_curvature);
   }
 }
 
@@ -287,10 +252,11 @@ Offer offer_for(const OptionValues &options) {
 template <class Variable>
 void run_on(System &system, Control control, double value, Monitor &monitor) {
   Variable formulation(system, control, value);
+  // Every objective the offer admits is quadratic, or separable (the gap with adhesion).
   if (formulation.quadratic())
     bugnicourt(formulation, monitor);
   else
-    bugnicourt_nonquadratic(formulation, monitor);
+    bugnicourt_separable(formulation, *formulation.local_term(), monitor);
   conclude(formulation, system, monitor);
 }
 

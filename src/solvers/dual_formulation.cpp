@@ -153,6 +153,28 @@ void DualFormulation::hessian_product(const double *direction, double *product) 
   counters_.transforms += 2;
 }
 
+double DualFormulation::quadratic_part_product(const double *direction, double *product) {
+  linear_update_ready_ = false;  // the direction's spectrum is overwritten, as in gap_of
+  substrate_.forward(direction, spectrum_.data());
+  Complex *s = spectrum_.data();
+  const double *c = compliance_.data();
+  // d.K^-1 d = k sum over all modes of C|D_q|^2 (C the normalised compliance): the stored
+  // entries count twice but for the single ones, which are read before the pass overwrites
+  // them.
+  const auto energy = [&](std::int64_t q) { return c[q] * std::norm(s[q]); };
+  double singles = substrate_.layout().single_entries_sum(energy);
+  grid_.reductions().combine_sums(&singles, 1);
+  const double factor = compliance_factor_;
+  const double all = loops::sums<1>(grid_.reductions(), static_cast<std::int64_t>(spectrum_.size()),
+                                    [&](std::int64_t q, double *sum) {
+                                      sum[0] += energy(q);
+                                      s[q] *= factor * c[q];
+                                    })[0];
+  substrate_.backward(spectrum_.data(), product);
+  counters_.transforms += 2;
+  return factor * (2.0 * all - singles);
+}
+
 double DualFormulation::error(const double *x, const double *gradient) const {
   // Under load control the penetration is the multiplier of the mean.
   return bound_residual(grid_.reductions(), n_, n_, x, gradient, 0.0,

@@ -45,7 +45,10 @@ class DualFormulation final : public ScaledFormulation {
   // ---- Formulation
   Field &variable() override;
   double value_and_gradient(const double *x, double *gradient) override;
+  void gradient(const double *x, double *gradient) override { gap_of(x, 1.0, gradient); }
   void hessian_product(const double *direction, double *product) override;
+  // K^-1 d, with d.K^-1 d summed in the pass over the spectrum (Parseval).
+  double quadratic_part_product(const double *direction, double *product) override;
   double gradient_at_zero(double *out) override;
   double lower_bound() const override { return 0.0; }
   bool constrains_mean() const override { return control_ == Control::mean_pressure; }

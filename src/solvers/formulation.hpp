@@ -17,6 +17,8 @@
 
 namespace asp {
 
+class LocalTerm;  // solvers/local_term.hpp
+
 // Work done so far, for the monitor's history.
 struct Counters {
   std::int64_t evaluations = 0;  // objective or gradient evaluations
@@ -33,6 +35,8 @@ class Formulation {
 
   // The objective at x and its gradient (in the inner product below).
   virtual double value_and_gradient(const double *x, double *gradient) = 0;
+  // The gradient alone, for solvers that need no value (a formulation may save a pass).
+  virtual void gradient(const double *x, double *gradient) { value_and_gradient(x, gradient); }
   // Whether the objective is quadratic. Without adhesion every formulation's is; with it the
   // primal's is not, and then the Hessian depends on the point and a solver must evaluate
   // the gradient wherever it needs it.
@@ -51,6 +55,28 @@ class Formulation {
   // from Hessian products, g(s(x + a d)) = s (g(x) + a H d) + (1 - s) c, instead of
   // evaluating it. (Of a formulation that is not quadratic it is only the gradient at 0.)
   virtual double gradient_at_zero(double *out) = 0;
+  // ---- The quadratic part. Of a quadratic objective it is all of it; of a separable one,
+  // f(x) = Q(x) + sum_i psi(x_i), it is Q (local_term() gives psi). A solver that keeps Q's
+  // gradient q can follow it along a step from Q's Hessian products exactly as above, and
+  // add the local term's slope element by element.
+  // Q's value at x and its gradient, into gradient (one evaluation).
+  virtual double quadratic_part(const double *x, double *gradient) {
+    return value_and_gradient(x, gradient);
+  }
+  // Q's gradient at 0, into out; returns Q(0).
+  virtual double quadratic_part_at_zero(double *out) { return gradient_at_zero(out); }
+  // Q's Hessian times a direction, into product; returns the curvature d.product. A
+  // formulation whose product passes through a spectrum sums the curvature there (Parseval),
+  // so that a solver needs no pass of its own for it.
+  virtual double quadratic_part_product(const double *direction, double *product) {
+    hessian_product(direction, product);
+    return dot(direction, product);
+  }
+  // The local term psi of a separable objective that is not quadratic; null for a quadratic
+  // objective (or one that is not separable). It acts on the bounded unknowns (the first
+  // bounded_size()) only.
+  virtual const LocalTerm *local_term() const { return nullptr; }
+
   // The inner product of the variable's space (weighted for packed spectra).
   virtual double dot(const double *a, const double *b) const = 0;
   // Bound constraints x >= lower_bound() (-infinity: none) on the first bounded_size()
@@ -64,7 +90,10 @@ class Formulation {
   virtual bool constrains_mean() const = 0;
   virtual double mean_target() const = 0;
   // The error measure of DESIGN.md section 2 at x with this gradient: the largest projected
-  // force-balance residual, divided by the reference pressure.
+  // force-balance residual, divided by the reference pressure. With bounds it is
+  // bound_residual (bound_residual.hpp) with lower_bound() and, under a mean constraint,
+  // relative to the gradient's mean over the free unknowns; solvers that gather it in their
+  // own passes rely on that.
   virtual double error(const double *x, const double *gradient) const = 0;
 
   // For the monitor's history: the fraction of pixels in repulsive contact at x; the objective

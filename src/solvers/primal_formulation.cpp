@@ -12,7 +12,8 @@ namespace asp {
 
 PrimalFormulation::PrimalFormulation(System &system, Control control, double value)
     : ScaledFormulation(system, control, value),
-      stiffness_(system.substrate().normalised_stiffness()) {
+      stiffness_(system.substrate().normalised_stiffness()),
+      local_term_(adhesion_) {
   unknowns_ = substrate_.surface_size();
   if (control == Control::mean_gap && unknowns_ > n_)
     throw Error(Status::unsupported,
@@ -62,18 +63,28 @@ PrimalFormulation::PrimalFormulation(System &system, Control control, double val
   }
 }
 
-void PrimalFormulation::apply_stiffness(const double *field, double *out) {
-  // K~/k with the transform's 1/N: the scaled stiffness, pixel stiffness 1.
+double PrimalFormulation::apply_stiffness(const double *field, double *out) {
+  // K~/k with the transform's 1/N: the scaled stiffness, pixel stiffness 1. The q = 0 entry is
+  // the first: without K~(0) under mean-gap control.
   substrate_.surface_forward(field, spectrum_.data());
   Complex *s = spectrum_.data();
+  if (control_ == Control::mean_gap) s[0] = 0.0;
   const double *k = stiffness_.data();
   const double factor = 1.0 / substrate_.pixel_stiffness();
-  loops::for_each(static_cast<std::int64_t>(spectrum_.size()),
-                  [&](std::int64_t q) { s[q] *= factor * k[q]; });
-  // The q = 0 entry is the first: without K~(0) under mean-gap control.
-  if (control_ == Control::mean_gap) s[0] = 0.0;
+  // u.K u = sum over all modes of the stiffness times |U_q|^2 (Parseval; the 1/N is in the
+  // normalised stiffness): the stored entries count twice but for the single ones, which
+  // are read before the pass overwrites them.
+  const auto energy = [&](std::int64_t q) { return k[q] * std::norm(s[q]); };
+  double singles = substrate_.layout().single_entries_sum(energy);
+  grid_.reductions().combine_sums(&singles, 1);
+  const double all = loops::sums<1>(grid_.reductions(), static_cast<std::int64_t>(spectrum_.size()),
+                                    [&](std::int64_t q, double *sum) {
+                                      sum[0] += energy(q);
+                                      s[q] *= factor * k[q];
+                                    })[0];
   substrate_.surface_backward(spectrum_.data(), out);
   counters_.transforms += 2;
+  return factor * (2.0 * all - singles);
 }
 
 void PrimalFormulation::elastic_pressure(const double *x, double *out) {
@@ -90,17 +101,17 @@ void PrimalFormulation::elastic_pressure(const double *x, double *out) {
 
 double PrimalFormulation::value_and_gradient(const double *x, double *gradient) {
   // E = (1/2) u.p (+ sum_i phi(x_i) with adhesion), gradient p (+ phi'(x)), all scaled.
+  if (!adhesive_) return quadratic_part(x, gradient);
   elastic_pressure(x, gradient);
   counters_.evaluations += 1;
   const double *u = displacement_.data();
+  // The displacement beyond the grid (a free substrate's padded surface) has only elastic
+  // energy.
   const double beyond =
       unknowns_ > n_ ? 0.5 * loops::sum(grid_.reductions(), unknowns_ - n_, [&](std::int64_t i) {
         return u[n_ + i] * gradient[n_ + i];
       })
                      : 0.0;
-  if (!adhesive_)
-    return beyond + 0.5 * loops::sum(grid_.reductions(), n_,
-                                     [&](std::int64_t i) { return u[i] * gradient[i]; });
   // One pass adds the interaction's pressure to the gradient and sums both energies.
   const ExponentialPotential phi = adhesion_;
   return beyond + loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
@@ -111,9 +122,36 @@ double PrimalFormulation::value_and_gradient(const double *x, double *gradient) 
   });
 }
 
+void PrimalFormulation::gradient(const double *x, double *gradient) {
+  if (adhesive_) {
+    value_and_gradient(x, gradient);
+    return;
+  }
+  elastic_pressure(x, gradient);
+  counters_.evaluations += 1;
+}
+
 double PrimalFormulation::gradient_at_zero(double *out) {
   const Field zero(static_cast<std::size_t>(unknowns_), 0.0);
   return value_and_gradient(zero.data(), out);
+}
+
+double PrimalFormulation::quadratic_part(const double *x, double *gradient) {
+  elastic_pressure(x, gradient);
+  counters_.evaluations += 1;
+  const double *u = displacement_.data();
+  return 0.5 * loops::sum(grid_.reductions(), unknowns_,
+                          [&](std::int64_t i) { return u[i] * gradient[i]; });
+}
+
+double PrimalFormulation::quadratic_part_at_zero(double *out) {
+  // out doubles as the zero iterate: it is read (into the displacement) before it is written.
+  loops::for_each(unknowns_, [&](std::int64_t i) { out[i] = 0.0; });
+  return quadratic_part(out, out);
+}
+
+double PrimalFormulation::quadratic_part_product(const double *direction, double *product) {
+  return apply_stiffness(direction, product);
 }
 
 void PrimalFormulation::hessian_product(const double *direction, double *product) {

@@ -26,6 +26,7 @@
 
 #include "physics/system.hpp"
 #include "solvers/control.hpp"
+#include "solvers/local_term.hpp"
 #include "solvers/scaled_formulation.hpp"
 
 namespace asp {
@@ -44,11 +45,19 @@ class PrimalFormulation final : public ScaledFormulation {
   std::int64_t bounded_size() const override { return n_; }
   bool quadratic() const override { return !adhesive_; }
   double value_and_gradient(const double *x, double *gradient) override;
+  // Without adhesion, the elastic pressure without the energy's pass.
+  void gradient(const double *x, double *gradient) override;
   // K d (+ phi''(x) d at the iterate x with adhesion).
   void hessian_product(const double *direction, double *product) override;
   // d.K d: phi'' < 0 makes K an upper bound of every Hessian.
   double curvature_bound(const double *direction, const double *product) const override;
   double gradient_at_zero(double *out) override;
+  // The quadratic part is the elastic energy (1/2) u.K u; with adhesion the local term is the
+  // interaction's phi.
+  double quadratic_part(const double *x, double *gradient) override;
+  double quadratic_part_at_zero(double *out) override;
+  double quadratic_part_product(const double *direction, double *product) override;
+  const LocalTerm *local_term() const override { return adhesive_ ? &local_term_ : nullptr; }
   double lower_bound() const override { return 0.0; }
   bool constrains_mean() const override { return control_ == Control::mean_gap; }
   double mean_target() const override { return target_; }
@@ -61,7 +70,8 @@ class PrimalFormulation final : public ScaledFormulation {
 
  private:
   // K u (scaled) of a field, into out; the q = 0 mode only under penetration control.
-  void apply_stiffness(const double *field, double *out);
+  // Returns u.K u (by Parseval, from the same pass over the spectrum).
+  double apply_stiffness(const double *field, double *out);
   // The scaled elastic pressure K u of the displacement the gap x makes, into out (u into
   // displacement_).
   void elastic_pressure(const double *x, double *out);
@@ -71,6 +81,7 @@ class PrimalFormulation final : public ScaledFormulation {
 
   Field displacement_;  // over the whole surface
   Spectrum spectrum_;
+  LocalTerm local_term_;
   // Only where the surface reaches beyond the grid (a free substrate): the unknowns, and the
   // pressure over the whole surface for finish().
   Field surface_unknowns_;

@@ -1,0 +1,238 @@
+// The fused passes of Bugnicourt's algorithm (solvers/bugnicourt_passes.hpp) against what
+// they replace: the error they gather is the formulation's error(); the curvature that the
+// Hessian product sums by Parseval is d.H d; the gradient of the adhesive primal's quadratic
+// part followed along a step, and the change of the objective to the trial point computed
+// without a transform, are those evaluations give; the local term's exponential is skipped only where
+// its slope is below 2^-60.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "core/random.hpp"
+#include "scene.hpp"
+#include "solvers/bugnicourt_passes.hpp"
+#include "solvers/dual_formulation.hpp"
+#include "solvers/primal_formulation.hpp"
+
+namespace {
+
+using asp::Control;
+using Vector = std::vector<double>;
+
+constexpr double epsilon = std::numeric_limits<double>::epsilon();
+
+double max_abs(const Vector &a) {
+  double m = 0.0;
+  for (double v : a) m = std::max(m, std::fabs(v));
+  return m;
+}
+
+// Uniform in [low, 1), then entries below 0 set to 0: a share of the unknowns on the bound.
+Vector random_iterate(std::size_t n, std::uint64_t seed, double low) {
+  asp::Random random(seed);
+  Vector v(n);
+  for (double &x : v) x = std::max(0.0, low + (1.0 - low) * random.uniform());
+  return v;
+}
+
+Vector random_vector(std::size_t n, std::uint64_t seed, double low, double high) {
+  asp::Random random(seed);
+  Vector v(n);
+  for (double &x : v) x = low + (high - low) * random.uniform();
+  return v;
+}
+
+// A 48 x 40 rough scene (odd enough to have both single-weight columns), optionally adhesive.
+struct Scene {
+  std::shared_ptr<asp::Grid> grid = asp_test::grid_2d(48, 40, 1.0, 40.0 / 48.0);
+  asp::System system{grid, 1.0};
+  explicit Scene(bool adhesive) {
+    const auto heights = asp_test::rough_surface(*grid, 5, 0.1);
+    system.set_topography(heights.data());
+    const double P = 0.05, l = P / system.substrate().pixel_stiffness();
+    system.set_reference_pressure(P);
+    // Scaled range 0.5 and work 1: psi'' up to 4 pixel stiffnesses, strong adhesion.
+    if (adhesive) system.set_adhesion(P * l, 0.5 * l);
+  }
+};
+
+// The error the gather measures is the formulation's error() of the same iterate and
+// gradient. Without a mean constraint the multiplier is 0 and both take the same extremes, so
+// they agree bit for bit. With one, the multipliers are the same mean summed relative to
+// different pivots and in different orders: they differ by at most n eps max|g - pivot|
+// (1920 * 2^-52 * 3 < 1.3e-12 here), and so do the errors.
+class GatheredError : public ::testing::TestWithParam<std::tuple<bool, Control>> {};
+
+TEST_P(GatheredError, IsTheFormulationsError) {
+  const auto [primal, control] = GetParam();
+  Scene scene(false);
+  std::unique_ptr<asp::Formulation> f;
+  if (primal)
+    f = std::make_unique<asp::PrimalFormulation>(scene.system, control, 0.3);
+  else
+    f = std::make_unique<asp::DualFormulation>(scene.system, control, 0.01);
+  const auto n = static_cast<std::size_t>(f->size());
+  const asp::BugnicourtPasses passes(*f);
+  const Vector zero(n, 0.0);
+  for (std::uint64_t seed : {1, 2, 3}) {
+    const Vector x = random_iterate(n, seed, -0.5);
+    const Vector g = random_vector(n, seed + 10, -1.0, 2.0);
+    const double expected = f->error(x.data(), g.data());
+    for (double pivot : {0.0, 0.7}) {
+      const asp::Projection p = passes.gather(
+          x.data(), [&](std::int64_t i) { return g[i]; },
+          [&](std::int64_t i) { return zero[i]; }, 0.0, f->constrains_mean() ? pivot : 0.0);
+      if (f->constrains_mean())
+        EXPECT_NEAR(p.error, expected, static_cast<double>(n) * epsilon * 3.0);
+      else
+        EXPECT_EQ(p.error, expected);
+    }
+  }
+  // A gradient that is not finite gives an error that is not finite, with or without a mean.
+  const Vector x = random_iterate(n, 4, -0.5);
+  for (double bad : {std::nan(""), HUGE_VAL, -HUGE_VAL}) {
+    Vector g = random_vector(n, 5, -1.0, 1.0);
+    g[n / 3] = bad;
+    const asp::Projection p = passes.gather(
+        x.data(), [&](std::int64_t i) { return g[i]; }, [](std::int64_t) { return 0.0; }, 0.0,
+        0.0);
+    EXPECT_FALSE(std::isfinite(p.error)) << bad;
+    EXPECT_FALSE(std::isfinite(f->error(x.data(), g.data()))) << bad;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Formulations, GatheredError,
+    ::testing::Values(std::make_tuple(true, Control::penetration),
+                      std::make_tuple(true, Control::mean_gap),
+                      std::make_tuple(false, Control::penetration),
+                      std::make_tuple(false, Control::mean_pressure)),
+    [](const ::testing::TestParamInfo<std::tuple<bool, Control>> &info) {
+      return std::string(std::get<0>(info.param) ? "gap_" : "pressure_") +
+             (std::get<1>(info.param) == Control::penetration ? "penetration" : "mean");
+    });
+
+// The curvature that quadratic_part_product sums over the spectrum is d.(Q d) summed over the
+// pixels: both are sums of the same energy, in different orders and after a transform pair,
+// so they agree to the transform's rounding, a few eps log N of the sum of |d_i (Qd)_i|
+// (1e-13 of it leaves a factor of 50).
+TEST(QuadraticPartProduct, CurvatureIsTheSumOverPixels) {
+  for (bool primal : {true, false}) {
+    for (Control control : {Control::penetration, Control::mean_gap, Control::mean_pressure}) {
+      if (primal == (control == Control::mean_pressure)) continue;
+      Scene scene(primal);
+      std::unique_ptr<asp::Formulation> f;
+      if (primal)
+        f = std::make_unique<asp::PrimalFormulation>(scene.system, control, 0.3);
+      else
+        f = std::make_unique<asp::DualFormulation>(scene.system, control, 0.01);
+      const auto n = static_cast<std::size_t>(f->size());
+      const Vector d = random_vector(n, 7, -1.0, 1.0);
+      Vector product(n);
+      const double curvature = f->quadratic_part_product(d.data(), product.data());
+      double sum = 0.0, size = 0.0;
+      for (std::size_t i = 0; i < n; ++i) {
+        sum += d[i] * product[i];
+        size += std::fabs(d[i] * product[i]);
+      }
+      EXPECT_NEAR(curvature, sum, 1e-13 * size) << primal << " " << static_cast<int>(control);
+      EXPECT_GT(curvature, 0.0);
+    }
+  }
+}
+
+// The adhesive primal f = Q + sum psi: after a step that the bound does not cut, the trial
+// pass's followed gradient of Q, s (q + alpha Q d) + (1 - s) c, is Q's gradient evaluated at
+// the trial point, and the change of the objective it sums without a transform,
+// (y - x).(q + qy)/2 + sum (psi(y) - psi(x)), is the difference of the evaluated values.
+// Both differ only by rounding: the gradient by that of the transforms, a few eps log N of
+// its largest entry (1e-13 of it); the change by that of the evaluated values, whose
+// difference loses their size: n eps (|f(x)| + |f(y)|).
+class FollowedSeparable : public ::testing::TestWithParam<Control> {};
+
+TEST_P(FollowedSeparable, GradientAndChangeAreTheEvaluatedOnes) {
+  const Control control = GetParam();
+  Scene scene(true);
+  asp::PrimalFormulation f(scene.system, control, control == Control::mean_gap ? 0.6 : 0.003);
+  ASSERT_FALSE(f.quadratic());
+  const asp::LocalTerm *psi = f.local_term();
+  ASSERT_NE(psi, nullptr);
+  const auto n = static_cast<std::size_t>(f.size());
+  const asp::BugnicourtPasses passes(f);
+
+  // An iterate with every unknown off the bound (so that a short step cuts nothing) and, under
+  // the mean constraint, the mean on target, as the solver keeps it.
+  Vector x = random_vector(n, 31, 0.1, 1.5);
+  if (f.constrains_mean()) {
+    double mean = 0.0;
+    for (double v : x) mean += v / static_cast<double>(n);
+    for (double &v : x) v *= f.mean_target() / mean;
+  }
+  Vector q(n), c(n), k(n), states(n), y(n), qy(n), states_y(n), evaluated(n), full(n);
+  f.quadratic_part_at_zero(c.data());
+  const double quadratic_x = f.quadratic_part(x.data(), q.data());
+  passes.local_states(x.data(), *psi, states.data());
+  const Vector d = random_vector(n, 32, -1.0, 1.0);
+  f.quadratic_part_product(d.data(), k.data());
+  // Short enough that nothing reaches the bound: the smallest x is above 0.07.
+  const double alpha = 0.05;
+  const asp::Trial t = passes.trial(x.data(), d.data(), alpha, q.data(), k.data(), c.data(),
+                                    states.data(), *psi, y.data(), qy.data(), states_y.data());
+  ASSERT_FALSE(t.cut);
+  const double quadratic_y = f.quadratic_part(y.data(), evaluated.data());
+  for (std::size_t i = 0; i < n; ++i)
+    ASSERT_NEAR(qy[i], evaluated[i], 1e-13 * max_abs(evaluated)) << "pixel " << i;
+  const double rounding = static_cast<double>(n) * epsilon;
+  EXPECT_NEAR(t.quadratic_change, quadratic_y - quadratic_x,
+              rounding * (std::fabs(quadratic_x) + std::fabs(quadratic_y)));
+  EXPECT_NEAR(passes.quadratic_change(x.data(), y.data(), q.data(), evaluated.data()),
+              quadratic_y - quadratic_x,
+              rounding * (std::fabs(quadratic_x) + std::fabs(quadratic_y)));
+
+  const double value_y = f.value_and_gradient(y.data(), full.data());
+  const double value_x = f.value_and_gradient(x.data(), evaluated.data());
+  EXPECT_NEAR(t.quadratic_change + psi->value_per_state() * t.state_change, value_y - value_x,
+              rounding * (std::fabs(value_x) + std::fabs(value_y)));
+  // The full gradient is Q's plus the local slopes the states give.
+  f.quadratic_part(y.data(), evaluated.data());
+  for (std::size_t i = 0; i < n; ++i)
+    ASSERT_NEAR(evaluated[i] + psi->slope_per_state() * states_y[i], full[i],
+                1e-13 * max_abs(full))
+        << "pixel " << i;
+}
+
+INSTANTIATE_TEST_SUITE_P(Controls, FollowedSeparable,
+                         ::testing::Values(Control::penetration, Control::mean_gap),
+                         [](const ::testing::TestParamInfo<Control> &info) {
+                           return info.param == Control::penetration ? "penetration"
+                                                                     : "mean_gap";
+                         });
+
+// The exponential is skipped exactly where the slope it would give is below 2^-60 (in units
+// of the reference pressure): at the threshold the slope is 2^-60 to rounding, and beyond it
+// the state is 0, while just before it it is the exponential itself.
+TEST(LocalTerm, SkipsTheExponentialOnlyWhereTheSlopeIsBelowTwoToTheMinusSixty) {
+  for (double work : {1e-3, 1.0, 1e3}) {
+    for (double range : {1e-2, 0.5, 20.0}) {
+      const asp::ExponentialPotential potential{work, range};
+      const asp::LocalTerm psi(potential);
+      const double cutoff = psi.negligible_beyond();
+      EXPECT_NEAR(potential.dphi(cutoff), std::ldexp(1.0, -60), 1e-12 * std::ldexp(1.0, -60))
+          << work << " " << range;
+      EXPECT_EQ(psi.state(std::nextafter(cutoff, HUGE_VAL)), 0.0);
+      EXPECT_EQ(psi.state(cutoff), std::exp(-cutoff / range));
+      EXPECT_EQ(psi.state(0.0), 1.0);
+      EXPECT_EQ(psi.slope_per_state(), potential.dphi(0.0));
+      EXPECT_EQ(psi.curvature_per_state(), potential.d2phi(0.0));
+      EXPECT_EQ(psi.value_per_state(), potential.phi(0.0));
+    }
+  }
+}
+
+}  // namespace
