@@ -23,20 +23,6 @@ constexpr int updates_between_evaluations = 32;
 // the step is far below what would still change the iterate.
 constexpr int max_halvings = 30;
 
-// The state the monitor sees at x with the gradient g (before projection), its error and the
-// value.
-IterationState observe(const Formulation &f, const double *x, const double *g, double error,
-                       double value, const Monitor &monitor) {
-  IterationState state;
-  state.error = error;
-  state.objective =
-      monitor.wants_objective() ? f.reported_objective(x, g, value) * f.energy_unit() : 0.0;
-  state.contact_fraction = monitor.wants_objective() ? f.contact_fraction(x) : 0.0;
-  state.evaluations = f.counters().evaluations;
-  state.transforms = f.counters().transforms;
-  return state;
-}
-
 // Alg. 4: exact step along d (the objective is quadratic), projection onto the bound, the
 // mean restored, then the conjugate direction with beta = r.Hd / d.Hd. The gradient g of a
 // step the bound did not cut follows from the Hessian product already made for the step

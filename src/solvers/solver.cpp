@@ -124,8 +124,13 @@ void Solver::solve(System &system, Control control, double value) {
 
 IterationState observe(const Formulation &f, const double *x, const double *g, double value,
                        const Monitor &monitor) {
+  return observe(f, x, g, f.error(x, g), value, monitor);
+}
+
+IterationState observe(const Formulation &f, const double *x, const double *g, double error,
+                       double value, const Monitor &monitor) {
   IterationState state;
-  state.error = f.error(x, g);
+  state.error = error;
   state.objective =
       monitor.wants_objective() ? f.reported_objective(x, g, value) * f.energy_unit() : 0.0;
   state.contact_fraction = monitor.wants_objective() ? f.contact_fraction(x) : 0.0;

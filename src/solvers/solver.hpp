@@ -71,6 +71,9 @@ class Solver {
 // fraction when the history is recorded.
 IterationState observe(const Formulation &f, const double *x, const double *g, double value,
                        const Monitor &monitor);
+// The same with the error already known (a solver that gathers it in a pass of its own).
+IterationState observe(const Formulation &f, const double *x, const double *g, double error,
+                       double value, const Monitor &monitor);
 
 // The end of every algorithm's run: writes the formulation's iterate back into the system, or,
 // after a breakdown (seen by the monitor or in the physical values), resets the system to zero
