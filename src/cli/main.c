@@ -128,7 +128,9 @@ static int solve(asp_solver *solver, const struct cli_options *o) {
     status = failed(asp_status, "setting the progress callback");
     goto done;
   }
-  asp_status = asp_solver_solve(solver, system, ASP_CONTROL_MEAN_PRESSURE, o->mean_pressure);
+  asp_status = o->penetration_control
+                   ? asp_solver_solve(solver, system, ASP_CONTROL_PENETRATION, o->penetration)
+                   : asp_solver_solve(solver, system, ASP_CONTROL_MEAN_PRESSURE, o->mean_pressure);
   cli_progress_clear(&progress);
   if (asp_status == ASP_ERR_UNSUPPORTED) { /* the algorithm cannot serve this scene */
     status = refused(asp_status, "--algorithm", o->algorithm);

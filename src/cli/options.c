@@ -16,13 +16,16 @@ void cli_usage(FILE *out) {
           "\n"
           "Solves the built-in scene, which needs no input files: a periodic self-affine surface\n"
           "(Hurst exponent 0.8, rms slope 0.1, roll-off at a quarter of the box, short cutoff at\n"
-          "8 pixels) pressed on an elastic half-space (E* = 1, box 1 x 1) at a mean pressure, and\n"
-          "prints how the solve ended and the contact's main results.\n"
+          "8 pixels) pressed on an elastic half-space (E* = 1, box 1 x 1) at a mean pressure or a\n"
+          "penetration, and prints how the solve ended and the contact's main results.\n"
           "\n"
           "Scene and solve:\n"
           "  --size N             grid of N x N pixels, N >= %d (default 512)\n"
           "  --seed S             seed of the random surface, a 64-bit integer (default 1)\n"
           "  --mean-pressure P    mean pressure in units of E*, 0 <= P <= %g (default 0.002)\n"
+          "  --penetration D      solve under penetration control instead, D in units of the\n"
+          "                       box, 0 <= D <= %g (for solvers that offer no load control,\n"
+          "                       such as lbfgsb); not together with --mean-pressure\n"
           "  --algorithm NAME     solver (default pk; see --list-algorithms)\n"
           "  --tolerance T        stopping tolerance on the error, the same as\n"
           "                       --option tolerance=T (default 1e-8)\n"
@@ -53,7 +56,7 @@ void cli_usage(FILE *out) {
           "     opened for writing\n"
           "  3  the library or the system failed: out of memory, FFT planning, a scene the\n"
           "     library cannot represent, writing the history file\n",
-          CLI_MIN_SIZE, CLI_MAX_MEAN_PRESSURE);
+          CLI_MIN_SIZE, CLI_MAX_MEAN_PRESSURE, CLI_MAX_PENETRATION);
 }
 
 /* Every refusal is one line naming the argument (and its value, when it has one), then a hint. */
@@ -148,6 +151,17 @@ static int check_mean_pressure(FILE *err, const char *argument, const char *text
   return 0;
 }
 
+static int check_penetration(FILE *err, const char *argument, const char *text, double d) {
+  char problem[160];
+  if (d < 0.0 || d > CLI_MAX_PENETRATION) {
+    snprintf(problem, sizeof problem,
+             "out of range: the penetration must lie between 0 and %g (in units of the box)",
+             CLI_MAX_PENETRATION);
+    return refuse(err, argument, text, problem);
+  }
+  return 0;
+}
+
 static char *copy_text(const char *text, size_t length) {
   char *copy = malloc(length + 1);
   if (copy != NULL) {
@@ -179,7 +193,7 @@ static int add_setting(FILE *err, struct cli_options *o, const char *argument, c
 
 /* The options, in the order of --help. */
 enum cli_key {
-  KEY_SIZE, KEY_SEED, KEY_MEAN_PRESSURE, KEY_ALGORITHM, KEY_TOLERANCE, KEY_OPTION, KEY_HISTORY,
+  KEY_SIZE, KEY_SEED, KEY_MEAN_PRESSURE, KEY_PENETRATION, KEY_ALGORITHM, KEY_TOLERANCE, KEY_OPTION, KEY_HISTORY,
   KEY_VERSION, KEY_LIST_ALGORITHMS, KEY_DESCRIBE, KEY_HELP
 };
 static const struct {
@@ -189,6 +203,7 @@ static const struct {
 } known_options[] = {{"--size", KEY_SIZE, 1},
                      {"--seed", KEY_SEED, 1},
                      {"--mean-pressure", KEY_MEAN_PRESSURE, 1},
+                     {"--penetration", KEY_PENETRATION, 1},
                      {"--algorithm", KEY_ALGORITHM, 1},
                      {"--tolerance", KEY_TOLERANCE, 1},
                      {"--option", KEY_OPTION, 1},
@@ -229,6 +244,21 @@ static int take_value(FILE *err, struct cli_options *o, enum cli_key key, const 
       status = read_double(err, name, value, value, &p, 0);
       if (status == 0) status = check_mean_pressure(err, name, value, p);
       if (status == 0) o->mean_pressure = p;
+      if (status == 0 && o->penetration_control)
+        return refuse(err, name, value, "cannot be combined with --penetration");
+      o->mean_pressure_given = 1;
+      break;
+    }
+    case KEY_PENETRATION: {
+      double d = 0.0;
+      status = read_double(err, name, value, value, &d, 0);
+      if (status == 0) status = check_penetration(err, name, value, d);
+      if (status == 0 && o->mean_pressure_given)
+        return refuse(err, name, value, "cannot be combined with --mean-pressure");
+      if (status == 0) {
+        o->penetration = d;
+        o->penetration_control = 1;
+      }
       break;
     }
     case KEY_ALGORITHM:
@@ -260,6 +290,9 @@ int cli_parse(int argc, char **argv, struct cli_options *o, FILE *err) {
   o->size = 512;
   o->seed = 1;
   o->mean_pressure = 0.002;
+  o->mean_pressure_given = 0;
+  o->penetration = 0.0;
+  o->penetration_control = 0;
   o->algorithm = "pk";
   o->history_path = NULL;
   o->n_settings = 0;

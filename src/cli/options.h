@@ -23,6 +23,9 @@
 /* The largest mean pressure, in units of E*: the built-in surface is in full contact well
  * below it, and strains of order one are outside linear elasticity. */
 #define CLI_MAX_MEAN_PRESSURE 1.0
+/* The largest penetration, in units of the box length: far beyond full contact of the
+ * built-in surface, whose heights span about a hundredth of the box. */
+#define CLI_MAX_PENETRATION 1.0
 
 /* One solver option, from --option NAME=VALUE or --tolerance T, applied in command-line order. */
 struct cli_setting {
@@ -38,6 +41,9 @@ struct cli_options {
   int64_t size;
   int64_t seed;
   double mean_pressure;
+  int mean_pressure_given;
+  double penetration; /* used when penetration_control is set */
+  int penetration_control;
   const char *algorithm;
   const char *history_path; /* NULL: no history */
   struct cli_setting *settings;

@@ -90,6 +90,11 @@ bad --mean-pressure "too large for a double" --mean-pressure 1e400
 bad --mean-pressure "not a finite number" --mean-pressure nan
 bad --mean-pressure "not a finite number" --mean-pressure inf
 bad --mean-pressure "empty" --mean-pressure ''
+bad --penetration "out of range" --penetration 1.5
+bad --penetration "out of range" --penetration -0.001
+bad --penetration "not a finite number" --penetration nan
+bad --mean-pressure "cannot be combined with --penetration" --penetration 0.004 --mean-pressure 0.01
+bad --penetration "cannot be combined with --mean-pressure" --mean-pressure 0.01 --penetration 0.004
 bad --tolerance "not a number" --tolerance abc
 bad --tolerance "tolerance" --tolerance 0
 bad --algorithm "unknown algorithm" --algorithm no-such-solver
@@ -111,7 +116,7 @@ expect "--help documents exit statuses 0 to 3" \
   bash -c 'grep -q "Exit status" "$1" && grep -qE "^  0 " "$1" && grep -qE "^  1 " "$1" &&
            grep -qE "^  2 " "$1" && grep -qE "^  3 " "$1"' _ "$out"
 expect "--help names every option" bash -c '
-  for o in --size --seed --mean-pressure --algorithm --tolerance --option --history \
+  for o in --size --seed --mean-pressure --penetration --algorithm --tolerance --option --history \
            --version --list-algorithms --describe; do
     grep -q -- "$o" "$1" || exit 1
   done' _ "$out"
@@ -146,6 +151,15 @@ expect "no progress line when stderr is not a terminal" [ ! -s "$err" ]
 run --size=64 --seed=-7 --mean-pressure=0.01 --tolerance=1e-6 --option stall_window=50
 expect "the --name=value form works (exit $rc, stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
 expect "the report names the seed" has "seed -7" "$out"
+
+# Solvers that offer no load control (lbfgsb; bugnicourt on the gap) solve the scene under
+# penetration control; under load control they are refused, naming the control.
+run --size 64 --algorithm lbfgsb --penetration 0.004
+expect "lbfgsb under --penetration exits 0 (stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
+expect "the report gives the penetration asked for" has "^penetration +0\.004$" "$out"
+run --size 64 --algorithm bugnicourt --option variable=gap --penetration 0.004
+expect "bugnicourt on the gap under --penetration exits 0 (stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
+bad --algorithm "does not offer mean_pressure control" --size 64 --algorithm lbfgsb
 
 run --size 64 --option max_iterations=3
 expect "a solve cut short by the iteration limit exits 1" [ "$rc" -eq 1 ]
