@@ -12,7 +12,8 @@
 namespace asp {
 
 // The state every solver leaves behind. Pressure and gap are consistent with each other:
-// gap = K^-1 pressure - (h - max h) - penetration.
+// gap = K^-1 pressure - (h - max h) - penetration, to rounding; a gap solve's pixels on the
+// wall have gap 0 exactly.
 struct ContactState {
   Field pressure;
   Field gap;

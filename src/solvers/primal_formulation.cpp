@@ -257,9 +257,12 @@ bool PrimalFormulation::finish() {
   const double delta = control_ == Control::mean_gap
                            ? mean_pressure / substrate_.k0() - target_ * length_unit_ - mean_height
                            : penetration_ * length_unit_;
+  // On the wall the gap is 0 exactly, as in the iterate: computed from the pressure it would
+  // be a rounding residue, which a warm start would read as an open pixel.
   const double check = loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
-    g[i] = u[i] - (heights_[i] - top) - delta;
-    return 0.0 * (p[i] + g[i]);  // NaN if anything overflowed
+    const double computed = u[i] - (heights_[i] - top) - delta;
+    g[i] = g[i] > 0.0 ? computed : 0.0;
+    return 0.0 * (p[i] + computed);  // NaN if anything overflowed
   });
   state_.penetration = delta;
   system_.remember_reference_pressure(pressure_unit_);

@@ -161,10 +161,10 @@ TEST(Lbfgsb, WarmStartStopsAtOnce) {
     solver.set_history(true);
     solver.solve(system, Control::penetration, 2e-3);
     EXPECT_TRUE(solver.report().converged()) << variable;
-    const bool on_the_gap = std::string(variable) == "gap";
-    EXPECT_EQ(solver.report().iterations, on_the_gap ? 1 : 0) << variable;
-    EXPECT_EQ(solver.history().back()[static_cast<int>(asp::HistoryColumn::evaluations)],
-              on_the_gap ? 2.0 : 1.0);
+    // On the gap too: the stored state has its contact pixels exactly on the wall (they
+    // used to come back with rounding-size gaps, read as open pixels: one more iteration).
+    EXPECT_EQ(solver.report().iterations, 0) << variable;
+    EXPECT_EQ(solver.history().back()[static_cast<int>(asp::HistoryColumn::evaluations)], 1.0);
   }
 }
 
