@@ -2,6 +2,7 @@
 
 #include <fftw3.h>
 
+#include <algorithm>
 #include <mutex>
 
 #include "core/error.hpp"
@@ -75,6 +76,72 @@ void RealFft::forward(const double *real, Complex *spectrum) const {
 void RealFft::backward(Complex *spectrum, double *real) const {
   fftw_execute_dft_c2r(static_cast<fftw_plan>(c2r_), reinterpret_cast<fftw_complex *>(spectrum),
                        real);
+}
+
+PaddedRealFft::PaddedRealFft(std::int64_t nx, std::int64_t ny, FftPlanning planning)
+    : nx_(nx), ny_(ny) {
+  const int width = static_cast<int>(2 * nx), height = static_cast<int>(2 * ny);
+  const int columns = static_cast<int>(nx + 1), rows = static_cast<int>(ny);
+  // Plan on scratch arrays: FFTW_MEASURE overwrites what it is given.
+  Field real(static_cast<std::size_t>(2 * nx * ny));
+  Spectrum spectrum(static_cast<std::size_t>((nx + 1) * 2 * ny));
+  auto *c = reinterpret_cast<fftw_complex *>(spectrum.data());
+  const unsigned flags = flags_of(planning);
+
+  std::lock_guard<std::mutex> lock(planner_mutex());
+  // Rows along x: ny of them, 2nx reals each, contiguous; out nx+1 complex each, contiguous.
+  fftw_plan r2c = fftw_plan_many_dft_r2c(1, &width, rows, real.data(), nullptr, 1, width, c,
+                                         nullptr, 1, columns, flags);
+  fftw_plan c2r = fftw_plan_many_dft_c2r(1, &width, rows, c, nullptr, 1, columns, real.data(),
+                                         nullptr, 1, width, flags | FFTW_DESTROY_INPUT);
+  // Columns along y: nx+1 of them, 2ny complex each, strided by nx+1, in place.
+  fftw_plan forward = fftw_plan_many_dft(1, &height, columns, c, nullptr, columns, 1, c,
+                                         nullptr, columns, 1, FFTW_FORWARD, flags);
+  fftw_plan backward = fftw_plan_many_dft(1, &height, columns, c, nullptr, columns, 1, c,
+                                          nullptr, columns, 1, FFTW_BACKWARD, flags);
+  if (r2c == nullptr || c2r == nullptr || forward == nullptr || backward == nullptr) {
+    destroy(r2c);
+    destroy(c2r);
+    destroy(forward);
+    destroy(backward);
+    throw Error(Status::fft, "FFTW could not plan a transform of this grid size");
+  }
+  rows_r2c_ = r2c;
+  rows_c2r_ = c2r;
+  columns_forward_ = forward;
+  columns_backward_ = backward;
+}
+
+PaddedRealFft::~PaddedRealFft() {
+  std::lock_guard<std::mutex> lock(planner_mutex());
+  destroy(rows_r2c_);
+  destroy(rows_c2r_);
+  destroy(columns_forward_);
+  destroy(columns_backward_);
+}
+
+void PaddedRealFft::forward(const double *box, Complex *spectrum, double *rows) const {
+  const std::int64_t width = 2 * nx_, columns = nx_ + 1;
+  // The box's rows, each followed by nx zeros.
+  for (std::int64_t j = 0; j < ny_; ++j) {
+    std::copy(box + nx_ * j, box + nx_ * (j + 1), rows + width * j);
+    std::fill(rows + width * j + nx_, rows + width * (j + 1), 0.0);
+  }
+  auto *s = reinterpret_cast<fftw_complex *>(spectrum);
+  fftw_execute_dft_r2c(static_cast<fftw_plan>(rows_r2c_), rows, s);
+  // The rows beyond the box are zero, and so are their transforms along x.
+  std::fill(spectrum + columns * ny_, spectrum + columns * 2 * ny_, Complex(0.0, 0.0));
+  fftw_execute_dft(static_cast<fftw_plan>(columns_forward_), s, s);
+}
+
+void PaddedRealFft::backward(Complex *spectrum, double *box, double *rows) const {
+  const std::int64_t width = 2 * nx_;
+  auto *s = reinterpret_cast<fftw_complex *>(spectrum);
+  fftw_execute_dft(static_cast<fftw_plan>(columns_backward_), s, s);
+  // Along x only the rows of the box, whose first nx values are kept.
+  fftw_execute_dft_c2r(static_cast<fftw_plan>(rows_c2r_), s, rows);
+  for (std::int64_t j = 0; j < ny_; ++j)
+    std::copy(rows + width * j, rows + width * j + nx_, box + nx_ * j);
 }
 
 HalfComplexFft::HalfComplexFft(std::int64_t nx, std::int64_t ny, FftPlanning planning) {

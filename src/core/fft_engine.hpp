@@ -32,6 +32,32 @@ class RealFft {
   void *c2r_ = nullptr;
 };
 
+// The transform of a 2D field of nx x ny, taken as zero outside its box, on the grid
+// zero-padded to 2nx x 2ny, and back, keeping only the box: RealFft(2nx, 2ny) without the
+// work its zero rows need. Forward: the ny rows of the box along x, then every column along y
+// (the rows beyond the box, zero, need no transform along x); backward the reverse, and along
+// x only the rows of the box. The spectrum is laid out as RealFft(2nx, 2ny)'s,
+// S[kx + (nx+1)*ky]; rows is a work field of at least 2nx*ny doubles (as every field, from the
+// library's allocator). No transform is normalised: backward(forward(f)) = 4 nx ny f.
+class PaddedRealFft {
+ public:
+  PaddedRealFft(std::int64_t nx, std::int64_t ny, FftPlanning planning);
+  ~PaddedRealFft();
+  PaddedRealFft(const PaddedRealFft &) = delete;
+  PaddedRealFft &operator=(const PaddedRealFft &) = delete;
+
+  void forward(const double *box, Complex *spectrum, double *rows) const;
+  // Destroys the spectrum it reads.
+  void backward(Complex *spectrum, double *box, double *rows) const;
+
+ private:
+  std::int64_t nx_, ny_;
+  void *rows_r2c_ = nullptr;     // ny transforms of 2nx along x
+  void *columns_forward_ = nullptr;   // nx+1 transforms of 2ny along y, in place
+  void *columns_backward_ = nullptr;
+  void *rows_c2r_ = nullptr;
+};
+
 // The real half-complex transform along each axis (FFTW's R2HC and HC2R): nx*ny real
 // coefficients, x fastest like the field. Along an axis of n points, entry k holds the real
 // part of frequency k for k <= n/2 and the imaginary part of frequency n - k above.

@@ -80,9 +80,15 @@ const HalfComplexFft &Grid::half_complex_fft() const {
   return *half_complex_plan_;
 }
 
+const PaddedRealFft &Grid::padded_fft() const {
+  std::lock_guard<std::mutex> lock(plans_mutex_);
+  if (!padded_plan_) padded_plan_.reset(new PaddedRealFft(nx_, ny_, planning_));
+  return *padded_plan_;
+}
+
 void Grid::set_fft_planning(FftPlanning planning) {
   std::lock_guard<std::mutex> lock(plans_mutex_);
-  if (!real_plans_.empty() || half_complex_plan_)
+  if (!real_plans_.empty() || half_complex_plan_ || padded_plan_)
     throw Error(Status::invalid_state,
                 "the grid's FFT plans already exist; set the planning right after creating it");
   planning_ = planning;
@@ -95,7 +101,7 @@ FftPlanning Grid::fft_planning() const {
 
 bool Grid::has_fft_plans() const {
   std::lock_guard<std::mutex> lock(plans_mutex_);
-  return !real_plans_.empty() || half_complex_plan_ != nullptr;
+  return !real_plans_.empty() || half_complex_plan_ != nullptr || padded_plan_ != nullptr;
 }
 
 }  // namespace asp

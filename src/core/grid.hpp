@@ -51,6 +51,8 @@ class Grid {
   const RealFft &fft() const { return real_fft(nx_, ny_); }
   const RealFft &real_fft(std::int64_t nx, std::int64_t ny) const;
   const HalfComplexFft &half_complex_fft() const;
+  // The grid's box on the grid zero-padded to 2nx x 2ny (2D grids).
+  const PaddedRealFft &padded_fft() const;
   void set_fft_planning(FftPlanning planning);
   FftPlanning fft_planning() const;
   bool has_fft_plans() const;
@@ -67,6 +69,7 @@ class Grid {
   mutable std::mutex plans_mutex_;
   mutable std::map<std::tuple<std::int64_t, std::int64_t>, std::unique_ptr<RealFft>> real_plans_;
   mutable std::unique_ptr<HalfComplexFft> half_complex_plan_;
+  mutable std::unique_ptr<PaddedRealFft> padded_plan_;
   LocalReductions reductions_;
 };
 

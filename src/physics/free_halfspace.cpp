@@ -81,25 +81,12 @@ Spectrum FreeHalfSpace::make_spectrum() const {
 }
 
 void FreeHalfSpace::forward(const double *field, Complex *spectrum) const {
-  // The box's rows into the padded field; the rest must be zero.
-  double *pad = padded_.data();
-  const std::int64_t width = padded_nx_;
-  for (std::int64_t j = 0; j < ny_; ++j) {
-    std::copy(field + nx_ * j, field + nx_ * (j + 1), pad + width * j);
-    if (!padding_is_zero_) std::fill(pad + width * j + nx_, pad + width * (j + 1), 0.0);
-  }
-  if (!padding_is_zero_) std::fill(pad + width * ny_, pad + width * padded_ny_, 0.0);
-  padding_is_zero_ = true;
-  grid_.real_fft(padded_nx_, padded_ny_).forward(pad, spectrum);
+  // The padded transform without the work of its zero rows (PaddedRealFft).
+  grid_.padded_fft().forward(field, spectrum, padded_.data());
 }
 
 void FreeHalfSpace::backward(Complex *spectrum, double *field) const {
-  double *pad = padded_.data();
-  grid_.real_fft(padded_nx_, padded_ny_).backward(spectrum, pad);
-  padding_is_zero_ = false;
-  const std::int64_t width = padded_nx_;
-  for (std::int64_t j = 0; j < ny_; ++j)
-    std::copy(pad + width * j, pad + width * j + nx_, field + nx_ * j);
+  grid_.padded_fft().backward(spectrum, field, padded_.data());
 }
 
 void FreeHalfSpace::surface_forward(const double *surface_field, Complex *spectrum) const {
@@ -113,14 +100,12 @@ void FreeHalfSpace::surface_forward(const double *surface_field, Complex *spectr
     std::copy(beside + nx_ * j, beside + nx_ * (j + 1), pad + width * j + nx_);
   }
   std::copy(below, below + width * ny_, pad + width * ny_);
-  padding_is_zero_ = false;
   grid_.real_fft(padded_nx_, padded_ny_).forward(pad, spectrum);
 }
 
 void FreeHalfSpace::surface_backward(Complex *spectrum, double *surface_field) const {
   double *pad = padded_.data();
   grid_.real_fft(padded_nx_, padded_ny_).backward(spectrum, pad);
-  padding_is_zero_ = false;
   const std::int64_t width = padded_nx_, box = nx_ * ny_;
   double *beside = surface_field + box;
   double *below = beside + box;
@@ -179,7 +164,6 @@ void FreeHalfSpace::make_kernel() const {
     }
     displacement_sum += pairs_y * row_sum;
   }
-  padding_is_zero_ = false;
   const double n = static_cast<double>(grid_.n_pixels());
   const double mean_displacement = displacement_sum / n;
 

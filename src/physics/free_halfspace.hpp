@@ -91,10 +91,9 @@ class FreeHalfSpace final : public Substrate {
   SpectralLayout layout_;
   double modulus_;
   double pixel_stiffness_ = 0.0;
-  // The box's field zero-padded, for the transforms. Its padding is zero unless a backward
-  // transform or the kernel wrote there since.
+  // Work for the transforms: the padded surface (its first ny rows for the box's transforms,
+  // all of it for the surface's and the kernel's).
   mutable Field padded_;
-  mutable bool padding_is_zero_ = true;
   mutable Field compliance_;
   mutable Field stiffness_;
   mutable double uniform_pressure_stiffness_ = 0.0;

@@ -83,4 +83,36 @@ TEST(Fft, WavevectorsWrapToTheNearestAlias) {
   EXPECT_DOUBLE_EQ(q[1 + 6 * row], 2 * asp_test::pi * std::hypot(1 / 2.0, 1 / 3.0));
 }
 
+TEST(Fft, PaddedTransformIsTheFullTransformOfTheZeroPaddedField) {
+  // The pruned transform skips the padding's zero rows; it must give RealFft(2nx, 2ny)'s
+  // spectrum of the padded field, and back the box of its inverse, to round-off.
+  for (auto shape : {Shape{2, 8, 6}, Shape{2, 9, 5}, Shape{2, 1, 4}, Shape{2, 7, 1}}) {
+    const std::int64_t nx = shape.nx, ny = shape.ny;
+    auto box_grid = asp::Grid::create(2, nx, ny, 1.0, 1.0);
+    auto padded_grid = asp::Grid::create(2, 2 * nx, 2 * ny, 2.0, 2.0);
+    asp::Field box = box_grid->make_field(), padded = padded_grid->make_field();
+    asp::Random random(11);
+    for (std::int64_t y = 0; y < ny; ++y)
+      for (std::int64_t x = 0; x < nx; ++x)
+        padded[static_cast<std::size_t>(x + 2 * nx * y)] =
+            box[static_cast<std::size_t>(x + nx * y)] = random.gaussian();
+    asp::Spectrum expected = padded_grid->make_spectrum(), pruned = padded_grid->make_spectrum();
+    padded_grid->fft().forward(padded.data(), expected.data());
+    asp::Field rows = padded_grid->make_field();
+    box_grid->padded_fft().forward(box.data(), pruned.data(), rows.data());
+    for (std::size_t k = 0; k < expected.size(); ++k)
+      EXPECT_LT(std::abs(pruned[k] - expected[k]), 1e-12 * (1 + std::abs(expected[k]))) << k;
+
+    asp::Field back = box_grid->make_field();
+    box_grid->padded_fft().backward(pruned.data(), back.data(), rows.data());
+    padded_grid->fft().backward(expected.data(), padded.data());
+    for (std::int64_t y = 0; y < ny; ++y)
+      for (std::int64_t x = 0; x < nx; ++x) {
+        const std::size_t i = static_cast<std::size_t>(x + nx * y);
+        EXPECT_NEAR(back[i], padded[static_cast<std::size_t>(x + 2 * nx * y)], 1e-12) << i;
+        EXPECT_NEAR(back[i] / (4.0 * nx * ny), box[i], 1e-13) << i;
+      }
+  }
+}
+
 }  // namespace
