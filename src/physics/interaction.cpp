@@ -9,6 +9,10 @@ const char *interaction_name(InteractionKind kind) {
   switch (kind) {
     case InteractionKind::hard_wall: return "non-adhesive hard wall";
     case InteractionKind::adhesive_hard_wall: return "adhesive hard wall";
+    case InteractionKind::soft_wall: return "soft wall";
+    case InteractionKind::lennard_jones: return "Lennard-Jones wall";
+    case InteractionKind::user_potential: return "user potential";
+    case InteractionKind::user_potential_hard_wall: return "user potential with hard wall";
   }
   return "unknown";
 }
@@ -28,6 +32,23 @@ double ExponentialAdhesion::energy(const Grid &grid, const ContactState &state) 
     return phi.phi(g[i] > 0.0 ? g[i] : 0.0);
   });
   return grid.pixel_area() * total;
+}
+
+double PotentialInteraction::energy(const Grid &grid, const ContactState &state) const {
+  const std::int64_t n = grid.n_pixels();
+  Field phi = grid.make_field(), slope = grid.make_field();
+  // With the hard wall, phi is defined on the wall's side (g >= 0 up to rounding).
+  const double *gap = state.gap.data();
+  Field clipped;
+  if (has_hard_wall()) {
+    clipped = grid.make_field();
+    double *c = clipped.data();
+    loops::for_each(n, [&](std::int64_t i) { c[i] = gap[i] > 0.0 ? gap[i] : 0.0; });
+    gap = c;
+  }
+  potential_->evaluate(n, gap, phi.data(), slope.data(), nullptr);
+  const double *f = phi.data();
+  return grid.pixel_area() * loops::sum(grid.reductions(), n, [&](std::int64_t i) { return f[i]; });
 }
 
 }  // namespace asp

@@ -2,21 +2,32 @@
 // of the gap, with or without a hard wall g >= 0. Observables that depend on it (which pixels
 // count as in contact, the interaction energy) are asked of it.
 //
-// Two interactions exist: the non-adhesive hard wall, which evaluates no potential at all, and
-// the hard wall with exponential adhesion. The adhesive potential is offered element-wise as
-// inline functions of a small value type (ExponentialPotential), so that a formulation fuses it
-// into its own passes without a virtual call per pixel.
+// The non-adhesive hard wall evaluates no potential at all. The hard wall with exponential
+// adhesion offers its potential element-wise as inline functions of a small value type
+// (ExponentialPotential), so that a formulation fuses it into its own passes without a
+// virtual call per pixel. Every other interaction is a Potential (potential.hpp), evaluated
+// over many gaps at once: a soft wall, which the gap may cross, or a user's potential with or
+// without the hard wall.
 #pragma once
 
 #include <cmath>
+#include <memory>
 
 #include "core/grid.hpp"
+#include "physics/potential.hpp"
 
 namespace asp {
 
 struct ContactState;
 
-enum class InteractionKind { hard_wall, adhesive_hard_wall };
+enum class InteractionKind {
+  hard_wall,
+  adhesive_hard_wall,
+  soft_wall,                 // SoftWallPotential, no hard wall
+  lennard_jones,             // the 9-3 wall potential, no hard wall
+  user_potential,            // a user's callback, no hard wall
+  user_potential_hard_wall,  // a user's callback with the hard wall g >= 0
+};
 const char *interaction_name(InteractionKind kind);
 
 class Interaction {
@@ -75,6 +86,36 @@ class ExponentialAdhesion final : public Interaction {
  private:
   ExponentialPotential potential_;
 };
+
+// A Potential, with or without the hard wall g >= 0. A pixel is in repulsive contact when it
+// carries positive pressure, as for the hard walls.
+class PotentialInteraction final : public Interaction {
+ public:
+  PotentialInteraction(InteractionKind kind, std::unique_ptr<Potential> potential)
+      : kind_(kind), potential_(std::move(potential)) {}
+  InteractionKind kind() const override { return kind_; }
+  // Evaluates the potential (a user's callback may throw Error(callback)).
+  double energy(const Grid &grid, const ContactState &state) const override;
+
+  const Potential &potential() const { return *potential_; }
+  bool has_hard_wall() const { return kind_ == InteractionKind::user_potential_hard_wall; }
+
+ private:
+  InteractionKind kind_;
+  std::unique_ptr<Potential> potential_;
+};
+
+// The potential of an interaction, or null if it has none of this kind.
+inline const PotentialInteraction *potential_interaction(const Interaction &interaction) {
+  switch (interaction.kind()) {
+    case InteractionKind::soft_wall:
+    case InteractionKind::lennard_jones:
+    case InteractionKind::user_potential:
+    case InteractionKind::user_potential_hard_wall:
+      return static_cast<const PotentialInteraction *>(&interaction);
+    default: return nullptr;
+  }
+}
 
 // The exponential adhesion of an interaction, or null if it has none.
 inline const ExponentialAdhesion *exponential_adhesion(const Interaction &interaction) {

@@ -141,6 +141,35 @@ void System::set_adhesion(double work, double range) {
   interaction_.reset(new ExponentialAdhesion(work, range));
 }
 
+void System::set_hard_wall() { interaction_.reset(new HardWall()); }
+
+void System::set_soft_wall(double repulsion, double repulsion_range, double attraction,
+                           double attraction_range) {
+  require_positive(repulsion, "gamma_r");
+  require_positive(repulsion_range, "rho_r");
+  require_non_negative(attraction, "gamma_a");
+  require_positive(attraction_range, "rho_a");
+  // Far inside the wall both exponentials are continued by parabolas; the repulsion's must be
+  // the steeper, or the energy would fall without bound as the surfaces interpenetrate.
+  const double repulsive_curvature = 4.0 * repulsion / (repulsion_range * repulsion_range);
+  const double attractive_curvature = attraction / (attraction_range * attraction_range);
+  if (!(repulsive_curvature > attractive_curvature))
+    throw Error(Status::invalid_argument,
+                "arguments 'gamma_r' " + format_number(repulsion) + ", 'rho_r' " +
+                    format_number(repulsion_range) + ", 'gamma_a' " + format_number(attraction) +
+                    ", 'rho_a' " + format_number(attraction_range) +
+                    ": the repulsion's curvature 4 gamma_r/rho_r^2 must exceed the attraction's "
+                    "gamma_a/rho_a^2 (and both be finite), or the energy has no lower bound "
+                    "when the surfaces interpenetrate");
+  set_potential(InteractionKind::soft_wall,
+                std::make_unique<SoftWallPotential>(repulsion, repulsion_range, attraction,
+                                                    attraction_range));
+}
+
+void System::set_potential(InteractionKind kind, std::unique_ptr<Potential> potential) {
+  interaction_.reset(new PotentialInteraction(kind, std::move(potential)));
+}
+
 void System::set_k0(double k0) {
   if (!substrate_->has_k0()) substrate_->set_k0(k0);  // refuses, naming the substrate
   require_positive(k0, "k0");

@@ -38,6 +38,16 @@ class System {
   // is kept as it is (an equilibrium of the old interaction, no longer of the new one), so
   // that the next solve starts from it.
   void set_adhesion(double work, double range);
+  // The plain, non-adhesive hard wall (the default).
+  void set_hard_wall();
+  // The soft wall phi(g) = gamma_r exp(-2g/rho_r) - gamma_a exp(-g/rho_a) (SoftWallPotential):
+  // gamma_r, rho_r, rho_a > 0, gamma_a >= 0, finite, and 4 gamma_r/rho_r^2 > gamma_a/rho_a^2
+  // (the repulsion outgrows the attraction inside the wall); refuses others with
+  // Error(invalid_argument) naming the arguments.
+  void set_soft_wall(double gamma_r, double rho_r, double gamma_a, double rho_a);
+  // Any potential, as an interaction of the given kind (soft_wall, lennard_jones,
+  // user_potential or user_potential_hard_wall). As for set_adhesion, the state is kept.
+  void set_potential(InteractionKind kind, std::unique_ptr<Potential> potential);
 
   // Changes K~(0) keeping the pressure and the gap: only the rigid-body penetration moves, by
   // pbar (1/K~(0)new - 1/K~(0)old), so that the state stays an equilibrium. Throws

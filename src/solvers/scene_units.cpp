@@ -24,7 +24,10 @@ SceneUnits scene_units(const System &system, Control control, double value) {
   const double k_mean = substrate.uniform_pressure_stiffness();
   double control_scale = load ? std::fabs(value) : k_mean * std::fabs(value);
   if (!std::isfinite(control_scale)) control_scale = 0.0;
-  const double tensile_stress = adhesion != nullptr ? adhesion->work() / adhesion->range() : 0.0;
+  const PotentialInteraction *soft = potential_interaction(system.interaction());
+  const double tensile_stress = adhesion != nullptr ? adhesion->work() / adhesion->range()
+                                : soft != nullptr   ? soft->potential().pressure_scale()
+                                                    : 0.0;
   if (tensile_stress > control_scale) control_scale = tensile_stress;
   SceneUnits units;
   units.pressure = system.reference_pressure(control_scale);
@@ -60,6 +63,20 @@ SceneUnits scene_units(const System &system, Control control, double value) {
                       " and length scale " + format_number(units.length) +
                       ": w/rho, w/rho^2 or the work would not be representable in the solve; "
                       "rescale the adhesion or set a reference pressure");
+  }
+  if (soft != nullptr) {
+    // Its pressures and range must be representable in these units, with room to spare.
+    stress = tensile_stress / units.pressure;
+    const double range_scaled = soft->potential().length_scale() / units.length;
+    if (!(stress <= largest_scaled) || !(range_scaled <= largest_scaled) ||
+        !(range_scaled >= 1.0 / largest_scaled))
+      throw Error(Status::invalid_argument,
+                  "the " + soft->potential().description() +
+                      " is out of proportion with the scene's pressure scale " +
+                      format_number(units.pressure) + " and length scale " +
+                      format_number(units.length) +
+                      ": its pressures or its range would not be representable in the solve; "
+                      "rescale the potential or set a reference pressure");
   }
   // Pressures reach the adhesion's tensile stress besides the scales of the load and heights.
   const double extent = 1.0 + std::fabs(units.target) + range + mean_displacement + stress;

@@ -20,9 +20,11 @@ struct SceneUnits {
   double adhesion_range = 1.0;  // rho/l
 };
 
-// The reference pressure P is the system's (System::reference_pressure); with adhesion, a
-// surface without slope takes the larger of the control's own scale and the largest tensile
-// stress w/rho, so that a purely adhesive scene is measured in its own pressures.
+// The reference pressure P is the system's (System::reference_pressure); with adhesion or a
+// soft potential, a surface without slope takes the larger of the control's own scale and the
+// potential's pressure scale (the largest tensile stress w/rho, say), so that a purely
+// adhesive scene is measured in its own pressures. A soft potential in these units is
+// potential().in_units(length, pressure).
 //
 // Throws Error(invalid_argument) naming 'value' or the scene's scales when the solve cannot
 // be represented; touches nothing.

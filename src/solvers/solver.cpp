@@ -110,7 +110,20 @@ void Solver::solve(System &system, Control control, double value) {
   settings.progress_data = progress_data_;
   Monitor monitor(settings);
 
-  algorithm_.run(system, control, value, options_, monitor);
+  // A user's potential can fail in the middle of a solve (Error(callback)): the system then
+  // goes back to the state the solve started from, which costs a copy of it only for them.
+  const InteractionKind kind = system.interaction().kind();
+  if (kind == InteractionKind::user_potential || kind == InteractionKind::user_potential_hard_wall) {
+    const ContactState start = system.state();
+    try {
+      algorithm_.run(system, control, value, options_, monitor);
+    } catch (...) {
+      system.state() = start;
+      throw;
+    }
+  } else {
+    algorithm_.run(system, control, value, options_, monitor);
+  }
 
   report_.iterations = monitor.iterations();
   report_.evaluations = monitor.evaluations();
