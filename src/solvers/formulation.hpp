@@ -77,6 +77,12 @@ class Formulation {
   // bounded_size()) only.
   virtual const LocalTerm *local_term() const { return nullptr; }
 
+  // For solvers that integrate dynamics (FIRE, GFMD) and take their time step from it: an
+  // upper bound on the largest eigenvalue of the Hessian at the current iterate, in this
+  // inner product (the quadratic part's largest stiffness plus the largest curvature of the
+  // interaction at the iterate). A formulation that cannot bound it returns 0.
+  virtual double largest_curvature() { return 0.0; }
+
   // The inner product of the variable's space (weighted for packed spectra).
   virtual double dot(const double *a, const double *b) const = 0;
   // Bound constraints x >= lower_bound() (-infinity: none) on the first bounded_size()
