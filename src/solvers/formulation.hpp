@@ -80,8 +80,12 @@ class Formulation {
   // For solvers that integrate dynamics (FIRE, GFMD) and take their time step from it: an
   // upper bound on the largest eigenvalue of the Hessian at the current iterate, in this
   // inner product (the quadratic part's largest stiffness plus the largest curvature of the
-  // interaction at the iterate). A formulation that cannot bound it returns 0.
-  virtual double largest_curvature() { return 0.0; }
+  // interaction at the iterate), or of the quadratic (elastic) part alone. A formulation that
+  // cannot bound it returns 0.
+  virtual double largest_curvature(bool with_interaction = true) {
+    (void)with_interaction;
+    return 0.0;
+  }
 
   // The inner product of the variable's space (weighted for packed spectra).
   virtual double dot(const double *a, const double *b) const = 0;
@@ -122,7 +126,8 @@ class Formulation {
   const Counters &counters() const { return counters_; }
 
  protected:
-  Counters counters_;
+  // Mutable: a spectral formulation's error measure (a const query) transforms too.
+  mutable Counters counters_;
 };
 
 }  // namespace asp

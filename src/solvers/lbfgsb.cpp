@@ -23,9 +23,6 @@ constexpr double sufficient_decrease = 1e-3;
 constexpr double curvature_condition = 0.9;
 constexpr double interval_width = 0.1;
 constexpr int evaluations_per_search = 20;
-// Below this change relative to phi(0), values are too close to compare (Hager & Zhang's
-// epsilon).
-constexpr double values_resolved = 1e-6;
 // The largest step of a search along a direction no bound limits.
 constexpr double unbounded_step = 1e10;
 
@@ -378,7 +375,7 @@ class Lbfgsb {
         move_to(0.0);
         return Search::not_finite;
       }
-      outcome = search.next(change_of_value(value, slope, search.step()), slope);
+      outcome = search.next(comparable_value(value, slope, search.step(), value_, slope_), slope);
       const bool accepted = outcome == StrongWolfeSearch::Outcome::found ||
                             (outcome == StrongWolfeSearch::Outcome::stuck &&
                              search.sufficient_decrease());
@@ -390,16 +387,6 @@ class Lbfgsb {
     }
     move_to(0.0);
     return Search::failed;
-  }
-
-  // The value the search compares, phi(step). Near the minimum phi(step) - phi(0) falls
-  // below the rounding of phi itself, and the sufficient decrease condition can no longer be
-  // checked from values: there, as in Hager & Zhang's approximate Wolfe conditions (SIAM J.
-  // Optim. 16, 2005), the change is taken from the slopes by the trapezoidal rule,
-  // phi(0) + step (phi'(0) + phi'(step))/2, exact for a quadratic such as the hard wall's.
-  double change_of_value(double value, double slope, double step) const {
-    if (std::fabs(value - value_) > values_resolved * std::fabs(value_)) return value;
-    return value_ + 0.5 * step * (slope_ + slope);
   }
 
   // x <- max(x_old + step d, lower): the bound holds bitwise whatever the rounding.

@@ -123,6 +123,12 @@ void StrongWolfeSearch::interpolate(double &best, double &f_best, double &g_best
     next = std::fabs(cubic - best) < std::fabs(quadratic - best)
                ? cubic
                : cubic + (quadratic - cubic) / 2.0;
+    // At least a tenth of the way to the trial (Nocedal & Wright's safeguard, section 3.5):
+    // where f rises by many orders of magnitude (a steep exponential wall), the cubic's
+    // minimiser is a difference of nearly equal terms, and rounding can put it anywhere
+    // near the best point, even behind it.
+    const double least = best + 0.1 * (trial - best);
+    if (!(trial > best ? next >= least : next <= least)) next = least;
     bracketed_ = true;
   } else if (opposite_slopes) {
     // Case 2, a lower value and slopes of opposite sign: bracketed. The cubic or the secant
@@ -144,8 +150,8 @@ void StrongWolfeSearch::interpolate(double &best, double &f_best, double &g_best
     const double q = (gamma + (g_best - g_trial)) + gamma;
     const double r = p / q;
     const double cubic = r < 0.0 && gamma != 0.0 ? trial + r * (best - trial)
-                         : trial > best        ? largest_
-                                               : smallest_;
+                         : trial > best        ? high_
+                                               : low_;
     const double secant = secant_minimiser(best, g_best, trial, g_trial);
     if (bracketed_) {
       // The step closer to the trial, kept inside the bracket.
@@ -153,9 +159,10 @@ void StrongWolfeSearch::interpolate(double &best, double &f_best, double &g_best
       next = trial > best ? std::min(trial + 0.66 * (other - trial), next)
                           : std::max(trial + 0.66 * (other - trial), next);
     } else {
-      // The step farther from the trial, inside the allowed range.
+      // The step farther from the trial, inside the range allowed before a bracket (More &
+      // Thuente's [stp + 1.1 (stp - stx), stp + 4 (stp - stx)]).
       next = std::fabs(cubic - trial) > std::fabs(secant - trial) ? cubic : secant;
-      next = std::max(smallest_, std::min(largest_, next));
+      next = std::max(low_, std::min(high_, next));
     }
   } else {
     // Case 4, a lower value, slopes of the same sign, and a slope that does not decrease:
@@ -163,7 +170,7 @@ void StrongWolfeSearch::interpolate(double &best, double &f_best, double &g_best
     if (bracketed_)
       next = cubic_minimiser(trial, f_trial, g_trial, other, f_other, g_other, false);
     else
-      next = trial > best ? largest_ : smallest_;
+      next = trial > best ? high_ : low_;
   }
 
   // The new interval: the trial replaces the end it may replace.

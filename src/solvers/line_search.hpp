@@ -9,7 +9,23 @@
 //   curvature            |phi'(step)| <= curvature |phi'(0)|.
 #pragma once
 
+#include <cmath>
+
 namespace asp {
+
+// The value a search should compare at `step`, given phi(step) = value and phi'(step) = slope
+// and phi(0) = value0, phi'(0) = slope0. Near a minimum phi(step) - phi(0) falls below the
+// rounding of phi itself, and the sufficient decrease condition can no longer be checked from
+// values: there, as in Hager & Zhang's approximate Wolfe conditions (SIAM J. Optim. 16, 2005),
+// the change is taken from the slopes by the trapezoidal rule, phi(0) + step (phi'(0) +
+// phi'(step))/2, exact for a quadratic. "Near" is a change below 1e-6 of |phi(0)| (their
+// epsilon).
+inline double comparable_value(double value, double slope, double step, double value0,
+                               double slope0) {
+  constexpr double values_resolved = 1e-6;
+  if (std::fabs(value - value0) > values_resolved * std::fabs(value0)) return value;
+  return value0 + 0.5 * step * (slope0 + slope);
+}
 
 class StrongWolfeSearch {
  public:

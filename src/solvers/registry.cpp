@@ -7,6 +7,7 @@
 #include "solvers/bugnicourt.hpp"
 #include "solvers/lbfgsb.hpp"
 #include "solvers/polonsky_keer.hpp"
+#include "solvers/unconstrained_algorithms.hpp"
 
 namespace asp {
 
@@ -60,7 +61,12 @@ std::string number_text(double v) {
 const std::vector<AlgorithmSpec> &algorithms() {
   static const std::vector<AlgorithmSpec> all = {with_common_options(polonsky_keer_algorithm()),
                                                  with_common_options(bugnicourt_algorithm()),
-                                                 with_common_options(lbfgsb_algorithm())};
+                                                 with_common_options(lbfgsb_algorithm()),
+                                                 with_common_options(lbfgs_algorithm()),
+                                                 with_common_options(lbfgs_fourier_algorithm()),
+                                                 with_common_options(gfmd_algorithm()),
+                                                 with_common_options(fire_algorithm()),
+                                                 with_common_options(fire_mass_weighted_algorithm())};
   return all;
 }
 

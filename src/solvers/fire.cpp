@@ -1,0 +1,80 @@
+#include "solvers/fire.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "core/loops.hpp"
+#include "solvers/solver.hpp"
+
+namespace asp {
+
+double automatic_time_step(Formulation &f) {
+  const double curvature = f.largest_curvature();
+  if (!(curvature > 0.0) || !std::isfinite(curvature))
+    throw Error(Status::internal, "the formulation bounds no curvature for a time step");
+  return 1.0 / std::sqrt(curvature);
+}
+
+void fire(Formulation &f, Monitor &monitor, const FireParameters &parameters) {
+  const std::int64_t n = f.size();
+  const Reductions &reductions = f.reductions();
+  double *x = f.variable().data();
+  Field force(static_cast<std::size_t>(n)), velocity(static_cast<std::size_t>(n), 0.0);
+  double *F = force.data(), *v = velocity.data();
+
+  double dt = parameters.time_step > 0.0 ? parameters.time_step : automatic_time_step(f);
+  // Bitzek et al.'s largest step is ten times a stable molecular-dynamics step; the step the
+  // elastic modes alone allow is taken as that, not the first step, which a start deep inside
+  // a stiff wall can make orders of magnitude smaller.
+  const double largest = parameters.largest_step > 0.0
+                             ? parameters.largest_step
+                             : 10.0 * std::max(dt, 1.0 / std::sqrt(f.largest_curvature(false)));
+  double alpha = parameters.mixing;
+  int positive_steps = 0;
+
+  // The gradient is the negative force; the solver keeps the gradient and flips signs.
+  double value = f.value_and_gradient(x, F);
+  if (monitor.should_stop(0, observe(f, x, F, value, monitor))) return;
+  for (std::int64_t iteration = 1;; ++iteration) {
+    // P = F.v with F = -gradient.
+    const double power = -f.dot(F, v);
+    if (!std::isfinite(power)) {
+      monitor.declare_breakdown();
+      return;
+    }
+    if (power > 0.0) {
+      if (++positive_steps > parameters.delay) {
+        dt = std::min(dt * parameters.growth, largest);
+        alpha *= parameters.mixing_decay;
+      }
+    } else {
+      // Overshot: half a step back, stop, and start again more carefully.
+      positive_steps = 0;
+      const double back = 0.5 * dt;
+      loops::for_each(n, [&](std::int64_t i) {
+        x[i] -= back * v[i];
+        v[i] = 0.0;
+      });
+      dt *= parameters.shrink;
+      alpha = parameters.mixing;
+    }
+    // Semi-implicit Euler with the mixing: v += dt F, v <- (1 - alpha) v + alpha |v| F/|F|,
+    // x += dt v.
+    const auto norms = loops::sums<2>(reductions, n, [&](std::int64_t i, double *sum) {
+      v[i] -= dt * F[i];
+      sum[0] += v[i] * v[i];
+      sum[1] += F[i] * F[i];
+    });
+    const double mix = norms[1] > 0.0 ? alpha * std::sqrt(norms[0] / norms[1]) : 0.0;
+    const double keep = 1.0 - alpha;
+    loops::for_each(n, [&](std::int64_t i) {
+      v[i] = keep * v[i] - mix * F[i];
+      x[i] += dt * v[i];
+    });
+    value = f.value_and_gradient(x, F);
+    if (monitor.should_stop(iteration, observe(f, x, F, value, monitor))) return;
+  }
+}
+
+}  // namespace asp

@@ -1,0 +1,63 @@
+// The unconstrained problem of a soft potential (soft_formulation.hpp) in the thesis's
+// preconditioned Fourier variables (section 4.2): the displacement's real half-complex
+// spectrum c (FFTW's R2HC along each axis; 1D and 2D, odd and even sizes), scaled mode by
+// mode so that the elastic energy is half the squared norm of the variable,
+//     v_k = sqrt(w_k s_k / N) c_k,   (1/2) u.K u = (1/2) sum_k v_k^2,
+// with s_k = K~(q_k) over the pixel stiffness and w_k the mode's Parseval weight (1, 2 or 4:
+// how many complex modes the coefficient stands for). The elastic Hessian is the identity;
+// only the potential's part of the Hessian is left to the solver. (The thesis writes
+// v = sqrt(K~) u~ and keeps the weights in the gradient, eqs. 62-66; folding them into the
+// variable makes the plain inner product the right one.) Mass-weighted FIRE with masses
+// proportional to K~(q) (Zhou et al. 2019) is FIRE with unit masses on this variable.
+//
+// The q = 0 mode: under penetration control it is elastic like the others, with the
+// stiffness K~(0) of the system's convention. Under mean-pressure control it has no elastic
+// energy; its coefficient is still scaled with K~(0), which only sets the size of its steps,
+// and the load's term pbar sum u = pbar c_0 drives it.
+//
+// One evaluation costs one backward transform (v to u, for the gaps) and one forward
+// (phi' to the gradient). The error measure, the largest force-balance residual in real space
+// as for every formulation, costs one more backward transform. Periodic substrates only: a
+// free substrate's stiffness is not diagonal in the box's spectrum.
+#pragma once
+
+#include "core/spectral_layout.hpp"
+#include "solvers/soft_formulation.hpp"
+
+namespace asp {
+
+class FourierFormulation final : public SoftFormulation {
+ public:
+  // Checks the scene (throws Error, the state untouched), allocates, and starts from the
+  // displacement of the system's state.
+  FourierFormulation(System &system, Control control, double value);
+
+  Field &variable() override { return variable_; }
+  double value_and_gradient(const double *v, double *gradient) override;
+  bool quadratic() const override { return false; }
+  // (I + A^T phi''(g) A) d at the iterate, A the map from v to u.
+  void hessian_product(const double *direction, double *product) override;
+  double gradient_at_zero(double *out) override;
+  // 1 + (the largest phi'' at the iterate) / (the smallest s_k): |A|^2 = 1/min s_k.
+  double largest_curvature(bool with_interaction = true) override;
+  // The largest |K u + phi'(g) + pbar| in real space, from the gradient (one transform).
+  double error(const double *v, const double *gradient) const override;
+  bool finish() override;
+
+  // The real-space displacement of a variable, scaled (for tests).
+  void displacement_of(const double *v, double *u);
+
+ private:
+  const HalfComplexFft &fft_;
+  Field variable_;
+  Field to_spectrum_;   // c_k = to_spectrum_k v_k: sqrt(N/(w_k s_k))
+  Field to_gradient_;   // the gradient's part from phi': to_gradient_k R2HC(phi' + pbar)_k
+                        // times to_spectrum_k w_k / N
+  Field elastic_;       // 1, or 0 for the q = 0 mode under mean-pressure control
+  Field displacement_;  // u of the last evaluation
+  mutable Field coefficients_;  // work space (the backward transform destroys its input)
+  mutable Field residual_;      // the error measure's residual in real space
+  double largest_compliance_;   // max_k 1/s_k
+};
+
+}  // namespace asp

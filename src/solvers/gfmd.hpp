@@ -1,0 +1,23 @@
+// Damped Green's function molecular dynamics (Campana & Muser, Phys. Rev. B 74, 2006;
+// Prodanov, Dapp & Muser, Tribol. Lett. 53, 2014; thesis Alg. 5): Verlet integration of the
+// equations of motion with a damping force proportional to the velocity,
+//     x_new = 2 x - x_old + dt^2 (F(x) - damping (x - x_old)/dt),
+// run on the preconditioned Fourier variable, where every elastic mode has unit mass-weighted
+// frequency: the masses are proportional to K~(q) (mass-weighted GFMD), and one damping
+// coefficient, 2 by default, damps every elastic mode critically.
+#pragma once
+
+#include "solvers/formulation.hpp"
+#include "solvers/monitor.hpp"
+
+namespace asp {
+
+struct GfmdParameters {
+  double time_step = 0.0;  // 0: 1/sqrt(f.largest_curvature()) at the start
+  double damping = 2.0;    // eta, per unit time
+};
+
+// Leaves the last iterate in f.variable().
+void gfmd(Formulation &f, Monitor &monitor, const GfmdParameters &parameters);
+
+}  // namespace asp

@@ -1,0 +1,193 @@
+#include "solvers/lbfgs.hpp"
+
+#include <cmath>
+#include <utility>
+#include <vector>
+
+#include "core/error.hpp"
+#include "core/loops.hpp"
+#include "solvers/line_search.hpp"
+#include "solvers/solver.hpp"
+
+namespace asp {
+namespace {
+
+// The line search's parameters: sufficient decrease 1e-4 and curvature 0.9 (Nocedal &
+// Wright's choice for quasi-Newton methods, so that the unit step is nearly always taken),
+// interval width 0.1; at most 20 evaluations per search.
+constexpr double sufficient_decrease = 1e-4;
+constexpr double curvature_condition = 0.9;
+constexpr double interval_width = 0.1;
+constexpr int evaluations_per_search = 20;
+constexpr double largest_step = 1e10;
+
+enum class Search { accepted, failed, not_finite };
+
+class Lbfgs {
+ public:
+  Lbfgs(Formulation &f, int memory)
+      : f_(f),
+        n_(f.size()),
+        memory_(memory),
+        x_(f.variable().data()),
+        g_(static_cast<std::size_t>(n_)),
+        trial_gradient_(static_cast<std::size_t>(n_)),
+        x_old_(static_cast<std::size_t>(n_)),
+        d_(static_cast<std::size_t>(n_)),
+        alpha_(static_cast<std::size_t>(memory)),
+        rho_(static_cast<std::size_t>(memory)) {
+    for (int j = 0; j < memory; ++j) {
+      s_.emplace_back(static_cast<std::size_t>(n_));
+      y_.emplace_back(static_cast<std::size_t>(n_));
+    }
+  }
+
+  void run(Monitor &monitor) {
+    value_ = f_.value_and_gradient(x_, g_.data());
+    if (monitor.should_stop(0, observe(f_, x_, g_.data(), value_, monitor))) return;
+    for (std::int64_t iteration = 1;;) {
+      two_loop_direction();
+      const Search search = line_search();
+      if (search == Search::not_finite) {
+        monitor.declare_breakdown();
+        return;
+      }
+      if (search == Search::failed) {
+        // The memory's direction is no use (rounding near the solution, or pairs from a
+        // region of other curvature): start again from steepest descent. Without pairs
+        // there is no descent left short of the tolerance.
+        if (pairs_ == 0) {
+          monitor.declare_stalled();
+          return;
+        }
+        pairs_ = 0;
+        continue;
+      }
+      update_memory();
+      if (monitor.should_stop(iteration, observe(f_, x_, g_.data(), value_, monitor))) return;
+      ++iteration;
+    }
+  }
+
+ private:
+  double dot(const Field &a, const Field &b) const { return f_.dot(a.data(), b.data()); }
+
+  // d = -H g by the two-loop recursion over the stored pairs, newest first; H0 = gamma I
+  // with gamma = s.y/y.y of the newest pair (1 without pairs: the formulations are scaled so
+  // that the elastic stiffness of a pixel, or of a mode, is 1).
+  void two_loop_direction() {
+    double *d = d_.data();
+    const double *g = g_.data();
+    loops::for_each(n_, [&](std::int64_t i) { d[i] = -g[i]; });
+    for (int k = 0; k < pairs_; ++k) {
+      const int j = slot(pairs_ - 1 - k);
+      const double *y = y_[j].data();
+      const double a = rho_[j] * dot(s_[j], d_);
+      alpha_[j] = a;
+      loops::for_each(n_, [&](std::int64_t i) { d[i] -= a * y[i]; });
+    }
+    const double gamma = pairs_ > 0 ? gamma_ : 1.0;
+    loops::for_each(n_, [&](std::int64_t i) { d[i] *= gamma; });
+    for (int k = 0; k < pairs_; ++k) {
+      const int j = slot(k);
+      const double *s = s_[j].data();
+      const double b = rho_[j] * dot(y_[j], d_);
+      const double a = alpha_[j];
+      loops::for_each(n_, [&](std::int64_t i) { d[i] += (a - b) * s[i]; });
+    }
+    slope_ = dot(g_, d_);
+    if (!(slope_ < 0.0) && std::isfinite(slope_) && pairs_ > 0) {
+      // Not a descent direction (the pairs no longer describe the curvature): steepest
+      // descent, without the memory.
+      pairs_ = 0;
+      two_loop_direction();
+    }
+  }
+
+  // The memory is a ring: pair k (0 the oldest) of pairs_ sits in slot (newest_ - pairs_ + 1
+  // + k) mod memory.
+  int slot(int k) const { return (newest_ - pairs_ + 1 + k + 2 * memory_) % memory_; }
+
+  // Along d from x, for the strong Wolfe conditions, from the unit step. On success x, g and
+  // value_ are the accepted point's and x_old the previous one.
+  Search line_search() {
+    if (!std::isfinite(slope_)) return Search::not_finite;
+    if (!(slope_ < 0.0)) return Search::failed;
+    double *x = x_, *x_old = x_old_.data();
+    const double *d = d_.data();
+    loops::for_each(n_, [&](std::int64_t i) { x_old[i] = x[i]; });
+    const auto move_to = [&](double step) {
+      loops::for_each(n_, [&](std::int64_t i) { x[i] = x_old[i] + step * d[i]; });
+    };
+    StrongWolfeSearch search(sufficient_decrease, curvature_condition, interval_width);
+    StrongWolfeSearch::Outcome outcome = search.start(value_, slope_, 1.0, largest_step);
+    for (int evaluation = 0; evaluation < evaluations_per_search; ++evaluation) {
+      move_to(search.step());
+      const double value = f_.value_and_gradient(x, trial_gradient_.data());
+      const double slope = dot(trial_gradient_, d_);
+      if (!std::isfinite(value) || !std::isfinite(slope)) {
+        move_to(0.0);
+        return Search::not_finite;
+      }
+      outcome = search.next(comparable_value(value, slope, search.step(), value_, slope_), slope);
+      // A search stuck at the step 0 has found nothing.
+      const bool accepted = outcome == StrongWolfeSearch::Outcome::found ||
+                            (outcome == StrongWolfeSearch::Outcome::stuck &&
+                             search.sufficient_decrease() && search.step() > 0.0);
+      if (accepted) {
+        value_ = value;
+        return Search::accepted;
+      }
+      if (outcome == StrongWolfeSearch::Outcome::stuck) break;
+    }
+    move_to(0.0);
+    return Search::failed;
+  }
+
+  // s = x - x_old, y = g_new - g enter the memory if s.y > 0 (the curvature condition, which
+  // the strong Wolfe conditions guarantee up to rounding); the new gradient becomes g. They
+  // are written into the slot after the newest, the oldest pair's when the memory is full,
+  // so that a pair that fails the condition costs the oldest one.
+  void update_memory() {
+    const int j = (newest_ + 1) % memory_;
+    double *s = s_[j].data(), *y = y_[j].data();
+    const double *x = x_, *x_old = x_old_.data(), *g = g_.data(), *g_new = trial_gradient_.data();
+    const auto sums = loops::sums<2>(f_.reductions(), n_, [&](std::int64_t i, double *sum) {
+      s[i] = x[i] - x_old[i];
+      y[i] = g_new[i] - g[i];
+      sum[0] += s[i] * y[i];
+      sum[1] += y[i] * y[i];
+    });
+    std::swap(g_, trial_gradient_);
+    if (!(sums[0] > 0.0) || !(sums[1] > 0.0)) {
+      if (pairs_ == memory_) --pairs_;
+      return;
+    }
+    newest_ = j;
+    rho_[j] = 1.0 / sums[0];
+    gamma_ = sums[0] / sums[1];
+    if (pairs_ < memory_) ++pairs_;
+  }
+
+  Formulation &f_;
+  std::int64_t n_;
+  int memory_;
+  double *x_;
+  double value_ = 0.0, slope_ = 0.0, gamma_ = 1.0;
+  Field g_, trial_gradient_, x_old_, d_;
+  std::vector<Field> s_, y_;
+  std::vector<double> alpha_, rho_;
+  int pairs_ = 0;
+  int newest_ = -1;
+};
+
+}  // namespace
+
+void lbfgs(Formulation &f, Monitor &monitor, int memory) {
+  if (f.constrains_mean() || std::isfinite(f.lower_bound()))
+    throw Error(Status::internal, "lbfgs runs on unconstrained formulations only");
+  Lbfgs algorithm(f, memory);
+  algorithm.run(monitor);
+}
+
+}  // namespace asp

@@ -1,0 +1,133 @@
+#include "solvers/soft_formulation.hpp"
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "core/error.hpp"
+#include "core/loops.hpp"
+
+namespace asp {
+
+SoftFormulation::SoftFormulation(System &system, Control control, double value)
+    : ScaledFormulation(system, control, value) {
+  const PotentialInteraction *soft = potential_interaction(system.interaction());
+  if (soft == nullptr || soft->has_hard_wall())
+    throw Error(Status::internal, "an unconstrained formulation needs a soft potential");
+  if (control == Control::mean_gap)
+    throw Error(Status::unsupported,
+                "the unconstrained formulations offer penetration and mean-pressure control");
+  if (control == Control::mean_pressure && !substrate_.has_k0())
+    throw Error(Status::unsupported,
+                "mean-pressure control of an unconstrained formulation is offered on a "
+                "periodic half-space only: on a " +
+                    std::string(substrate_name(substrate_.kind())) +
+                    " the rigid-body penetration is not a free mode of the displacement; use "
+                    "penetration control");
+  load_ = control == Control::mean_pressure ? target_ : 0.0;
+  penetration_ = control == Control::penetration ? target_ : 0.0;
+  potential_ = soft->potential().in_units(length_unit_, pressure_unit_);
+  gap_ = Field(static_cast<std::size_t>(n_));
+  phi_ = Field(static_cast<std::size_t>(n_));
+  dphi_ = Field(static_cast<std::size_t>(n_));
+  d2phi_ = Field(static_cast<std::size_t>(n_));
+}
+
+double SoftFormulation::lower_bound() const { return -std::numeric_limits<double>::infinity(); }
+
+void SoftFormulation::starting_displacement(double *u) const {
+  // The state's gap is g = u - (h - max h) - delta in physical units; the objective's delta is
+  // the state's under penetration control (the displacement carries over) and 0 under
+  // mean-pressure control (the gap carries over).
+  const double *g = state_.gap.data();
+  const double per_length = 1.0 / length_unit_, top = max_height_;
+  const double delta = load_control() ? 0.0 : state_.penetration;
+  loops::for_each(n_, [&](std::int64_t i) {
+    u[i] = (g[i] + (heights_[i] - top) + delta) * per_length;
+  });
+}
+
+double SoftFormulation::interaction(const double *u, bool curvature) {
+  double *g = gap_.data();
+  const double per_length = 1.0 / length_unit_, top = max_height_, delta = penetration_;
+  loops::for_each(n_, [&](std::int64_t i) {
+    g[i] = u[i] - (heights_[i] - top) * per_length - delta;
+  });
+  potential_->evaluate(n_, g, phi_.data(), dphi_.data(), curvature ? d2phi_.data() : nullptr);
+  const double *phi = phi_.data();
+  double *dphi = dphi_.data();
+  const double load = load_;
+  if (load == 0.0)
+    return loops::sum(grid_.reductions(), n_, [&](std::int64_t i) { return phi[i]; });
+  return loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
+    dphi[i] += load;
+    return phi[i] + load * u[i];
+  });
+}
+
+double SoftFormulation::largest_interaction_curvature() const {
+  const double *d2phi = d2phi_.data();
+  const double largest =
+      loops::maximum(grid_.reductions(), n_, [&](std::int64_t i) { return d2phi[i]; });
+  return largest > 0.0 ? largest : 0.0;
+}
+
+double SoftFormulation::contact_fraction(const double *) const {
+  const double *dphi = dphi_.data();
+  const double load = load_;
+  return loops::sum(grid_.reductions(), n_,
+                    [&](std::int64_t i) { return dphi[i] - load < 0.0 ? 1.0 : 0.0; }) /
+         static_cast<double>(n_);
+}
+
+bool SoftFormulation::store_state(const double *u) {
+  // The elastic pressure K u over the surface (scaled: the normalised stiffness over the
+  // pixel stiffness), without the q = 0 mode under mean-pressure control, where pbar is its
+  // mean instead.
+  const std::int64_t surface = substrate_.surface_size();
+  Field elastic(static_cast<std::size_t>(surface));
+  Spectrum spectrum = substrate_.make_spectrum();
+  substrate_.surface_forward(u, spectrum.data());
+  Complex *s = spectrum.data();
+  const double *k = substrate_.normalised_stiffness().data();
+  const double factor = 1.0 / substrate_.pixel_stiffness();
+  loops::for_each(static_cast<std::int64_t>(spectrum.size()),
+                  [&](std::int64_t q) { s[q] *= factor * k[q]; });
+  if (load_control()) s[0] = 0.0;
+  substrate_.surface_backward(spectrum.data(), elastic.data());
+
+  // The state: that pressure in physical units, then the gap it makes, so that gap =
+  // K^-1 p - (h - max h) - delta holds to rounding (on a free substrate K u outside the box,
+  // the residual, is left out).
+  double *p = state_.pressure.data();
+  const double *e = elastic.data();
+  const double pressure = pressure_unit_, load = load_, n = static_cast<double>(n_);
+  const double mean_pressure = loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
+    p[i] = (e[i] + load) * pressure;
+    return p[i] / n;
+  });
+  const double *c = substrate_.normalised_compliance().data();
+  substrate_.forward(p, spectrum.data());
+  loops::for_each(static_cast<std::int64_t>(spectrum.size()),
+                  [&](std::int64_t q) { s[q] *= c[q]; });
+  double *displacement = elastic.data();
+  substrate_.backward(spectrum.data(), displacement);
+  counters_.transforms += 4;
+  // Under mean-pressure control the convention mean u = pbar/K~(0) sets the penetration that
+  // keeps the iterate's gap: delta = pbar/K~(0) - l mean(u).
+  const double mean_u =
+      loops::sum(grid_.reductions(), n_, [&](std::int64_t i) { return u[i] / n; });
+  const double delta = load_control() ? mean_pressure / substrate_.k0() - length_unit_ * mean_u
+                                      : penetration_ * length_unit_;
+  double *g = state_.gap.data();
+  const double top = max_height_;
+  const double check = loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
+    g[i] = displacement[i] - (heights_[i] - top) - delta;
+    return 0.0 * (p[i] + g[i]);  // NaN if anything overflowed
+  });
+  state_.penetration = delta;
+  system_.remember_reference_pressure(pressure_unit_);
+  return check == 0.0 && std::isfinite(delta);
+}
+
+}  // namespace asp

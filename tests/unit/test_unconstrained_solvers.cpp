@@ -1,0 +1,167 @@
+// The five unconstrained solvers of soft potentials reach the same minimum: on a smooth
+// adhesive 1D scene and on a 2D rough adhesive scene, under penetration and mean-pressure
+// control; and they refuse what they cannot serve.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+#include "scene.hpp"
+
+using namespace asp;
+using asp_test::grid_1d;
+using asp_test::grid_2d;
+
+namespace {
+
+const char *const unconstrained[] = {"lbfgs", "lbfgs_fourier", "gfmd", "fire",
+                                     "fire_mass_weighted"};
+
+struct Result {
+  SolveReport report;
+  double energy;
+  std::vector<double> gap;
+  double mean_pressure, penetration, contact;
+};
+
+Result solve_soft(const char *algorithm, System &system, Control control, double value,
+                  double tolerance) {
+  system.reset_state();
+  Result r;
+  r.report = asp_test::solve_with(algorithm, system, control, value, tolerance, 200000);
+  r.energy = system.elastic_energy() + system.mean_mode_energy() + system.interaction_energy();
+  r.gap = asp_test::field_vector(system.state().gap);
+  r.mean_pressure = system.mean_pressure();
+  r.penetration = system.state().penetration;
+  r.contact = system.contact_fraction();
+  return r;
+}
+
+// A sinusoid of amplitude 1 on a period of 64 (E* = 1) against a soft wall of range 0.2 with
+// attraction (equilibrium gap 0.2 ln 10 = 0.46, work of adhesion 1e-3): smooth, adhesive,
+// one contact per period.
+std::unique_ptr<System> smooth_adhesive_1d() {
+  auto grid = grid_1d(256, 64.0);
+  auto system = std::make_unique<System>(grid, 1.0);
+  std::vector<double> h(256);
+  sinusoid_topography(*grid, 1.0, 1, 0, h.data());
+  system->set_topography(h.data());
+  system->set_soft_wall(0.1, 0.2, 0.02, 0.2);
+  return system;
+}
+
+class UnconstrainedAgreement : public ::testing::TestWithParam<Control> {};
+
+TEST_P(UnconstrainedAgreement, AllFiveReachTheSameMinimumOnASmoothAdhesive1dScene) {
+  auto system = smooth_adhesive_1d();
+  const Control control = GetParam();
+  // The crest 0.2 from the wall, in its repulsive range; or a mean pressure of 0.005.
+  const double value = control == Control::penetration ? -0.2 : 0.005;
+  const Result reference = solve_soft("lbfgs_fourier", *system, control, value, 1e-10);
+  ASSERT_TRUE(reference.report.converged()) << termination_name(reference.report.termination);
+  for (const char *algorithm : unconstrained) {
+    const Result r = solve_soft(algorithm, *system, control, value, 1e-10);
+    EXPECT_TRUE(r.report.converged())
+        << algorithm << ": " << termination_name(r.report.termination) << " after "
+        << r.report.iterations << " iterations, error " << r.report.error;
+    EXPECT_NEAR(r.energy, reference.energy, 1e-8 * std::fabs(reference.energy)) << algorithm;
+    EXPECT_NEAR(r.mean_pressure, reference.mean_pressure, 1e-8) << algorithm;
+    EXPECT_NEAR(r.penetration, reference.penetration, 1e-7) << algorithm;
+    EXPECT_LT(asp_test::max_abs_difference(r.gap, reference.gap), 1e-7) << algorithm;
+  }
+}
+
+// A 32 x 32 self-affine surface (rms slope 0.1, short cutoff 2 pixels) against a soft wall of
+// range 0.3 pixels with attraction: many contacts, with attraction around each.
+std::unique_ptr<System> rough_adhesive_2d() {
+  auto grid = grid_2d(32, 32, 32.0, 32.0);
+  auto system = std::make_unique<System>(grid, 1.0);
+  const std::vector<double> h = asp_test::rough_surface(*grid, 5, 0.1, 0.5, 2.0);
+  system->set_topography(h.data());
+  system->set_soft_wall(0.05, 0.3, 0.01, 0.3);
+  return system;
+}
+
+TEST_P(UnconstrainedAgreement, AllFiveReachTheSameMinimumOnA2dRoughAdhesiveScene) {
+  auto system = rough_adhesive_2d();
+  const Control control = GetParam();
+  const double value = control == Control::penetration ? -0.45 : 3e-4;
+  const Result reference = solve_soft("lbfgs_fourier", *system, control, value, 1e-10);
+  ASSERT_TRUE(reference.report.converged()) << termination_name(reference.report.termination);
+  EXPECT_GT(reference.contact, 0.02);
+  EXPECT_LT(reference.contact, 0.5);
+  for (const char *algorithm : unconstrained) {
+    const Result r = solve_soft(algorithm, *system, control, value, 1e-10);
+    EXPECT_TRUE(r.report.converged())
+        << algorithm << ": " << termination_name(r.report.termination) << " after "
+        << r.report.iterations << " iterations, error " << r.report.error;
+    EXPECT_NEAR(r.energy, reference.energy, 1e-8 * std::fabs(reference.energy)) << algorithm;
+    EXPECT_NEAR(r.mean_pressure, reference.mean_pressure, 1e-8) << algorithm;
+    EXPECT_NEAR(r.penetration, reference.penetration, 1e-7) << algorithm;
+    EXPECT_LT(asp_test::max_abs_difference(r.gap, reference.gap), 1e-7) << algorithm;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Controls, UnconstrainedAgreement,
+                         ::testing::Values(Control::penetration, Control::mean_pressure));
+
+}  // namespace
+
+namespace {
+
+// What the unconstrained solvers cannot serve is refused before the state is touched, with a
+// message that names the reason.
+void expect_refusal(const char *algorithm, System &system, Control control, double value,
+                    const char *mentions) {
+  const std::vector<double> before = asp_test::field_vector(system.state().gap);
+  try {
+    asp_test::solve_with(algorithm, system, control, value);
+    ADD_FAILURE() << algorithm << " accepted the request";
+  } catch (const Error &e) {
+    EXPECT_EQ(e.status(), Status::unsupported) << e.what();
+    EXPECT_NE(std::string(e.what()).find(mentions), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(asp_test::field_vector(system.state().gap), before);
+}
+
+TEST(UnconstrainedSolvers, RefuseTheHardWallsTheMeanGapAndWhatTheirVariableCannotHold) {
+  auto grid = grid_2d(16, 16, 16.0, 16.0);
+  System periodic(grid, 1.0);
+  const std::vector<double> h = asp_test::rough_surface(*grid, 2, 0.1, 0.5, 2.0);
+  periodic.set_topography(h.data());
+  for (const char *algorithm : unconstrained) {
+    expect_refusal(algorithm, periodic, Control::penetration, 0.1, "hard wall");
+    periodic.set_adhesion(0.01, 0.1);
+    expect_refusal(algorithm, periodic, Control::penetration, 0.1, "hard wall");
+    periodic.set_soft_wall(0.05, 0.3, 0.01, 0.3);
+    expect_refusal(algorithm, periodic, Control::mean_gap, 0.1, "mean_gap");
+    periodic.set_hard_wall();
+  }
+  System free_substrate(grid, 1.0, SubstrateKind::free);
+  free_substrate.set_topography(h.data());
+  free_substrate.set_soft_wall(0.05, 0.3, 0.01, 0.3);
+  for (const char *algorithm : {"lbfgs_fourier", "gfmd", "fire_mass_weighted"})
+    expect_refusal(algorithm, free_substrate, Control::penetration, 0.1, "free");
+  for (const char *algorithm : {"lbfgs", "fire"})
+    expect_refusal(algorithm, free_substrate, Control::mean_pressure, 0.01, "periodic");
+}
+
+// On the free half-space the real-space solvers work under penetration control, and agree.
+TEST(UnconstrainedSolvers, LbfgsAndFireAgreeOnTheFreeHalfSpace) {
+  auto grid = grid_2d(16, 16, 16.0, 16.0);
+  System system(grid, 1.0, SubstrateKind::free);
+  const std::vector<double> h = asp_test::rough_surface(*grid, 2, 0.1, 0.5, 2.0);
+  system.set_topography(h.data());
+  system.set_soft_wall(0.05, 0.3, 0.01, 0.3);
+  const Result a = solve_soft("lbfgs", system, Control::penetration, -0.45, 1e-10);
+  const Result b = solve_soft("fire", system, Control::penetration, -0.45, 1e-10);
+  ASSERT_TRUE(a.report.converged());
+  ASSERT_TRUE(b.report.converged());
+  EXPECT_GT(a.contact, 0.0);
+  EXPECT_NEAR(a.mean_pressure, b.mean_pressure, 1e-8);
+  EXPECT_LT(asp_test::max_abs_difference(a.gap, b.gap), 1e-7);
+}
+
+}  // namespace
