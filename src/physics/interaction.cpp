@@ -34,9 +34,11 @@ double ExponentialAdhesion::energy(const Grid &grid, const ContactState &state) 
   return grid.pixel_area() * total;
 }
 
-double PotentialInteraction::energy(const Grid &grid, const ContactState &state) const {
+void PotentialInteraction::evaluate_on(const Grid &grid, const ContactState &state, Field &phi,
+                                       Field &slope) const {
   const std::int64_t n = grid.n_pixels();
-  Field phi = grid.make_field(), slope = grid.make_field();
+  phi = grid.make_field();
+  slope = grid.make_field();
   // With the hard wall, phi is defined on the wall's side (g >= 0 up to rounding).
   const double *gap = state.gap.data();
   Field clipped;
@@ -47,8 +49,27 @@ double PotentialInteraction::energy(const Grid &grid, const ContactState &state)
     gap = c;
   }
   potential_->evaluate(n, gap, phi.data(), slope.data(), nullptr);
+}
+
+double PotentialInteraction::energy(const Grid &grid, const ContactState &state) const {
+  Field phi, slope;
+  evaluate_on(grid, state, phi, slope);
   const double *f = phi.data();
-  return grid.pixel_area() * loops::sum(grid.reductions(), n, [&](std::int64_t i) { return f[i]; });
+  return grid.pixel_area() *
+         loops::sum(grid.reductions(), grid.n_pixels(), [&](std::int64_t i) { return f[i]; });
+}
+
+double PotentialInteraction::contact_fraction(const Grid &grid, const ContactState &state) const {
+  if (has_hard_wall()) return Interaction::contact_fraction(grid, state);
+  // Without a wall, the pixels the potential pushes apart, phi'(g) < 0: the sign of the
+  // pressure would do as well at equilibrium, but far from contact that pressure is an
+  // attraction below rounding, and its sign is noise.
+  Field phi, slope;
+  evaluate_on(grid, state, phi, slope);
+  const double *d = slope.data();
+  const double count = loops::sum(grid.reductions(), grid.n_pixels(),
+                                  [&](std::int64_t i) { return d[i] < 0.0 ? 1.0 : 0.0; });
+  return count / static_cast<double>(grid.n_pixels());
 }
 
 }  // namespace asp

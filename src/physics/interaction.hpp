@@ -87,20 +87,25 @@ class ExponentialAdhesion final : public Interaction {
   ExponentialPotential potential_;
 };
 
-// A Potential, with or without the hard wall g >= 0. A pixel is in repulsive contact when it
-// carries positive pressure, as for the hard walls.
+// A Potential, with or without the hard wall g >= 0. With the wall a pixel is in repulsive
+// contact when it carries positive pressure, as for the hard walls; without it, where the
+// potential repels (phi'(g) < 0).
 class PotentialInteraction final : public Interaction {
  public:
   PotentialInteraction(InteractionKind kind, std::unique_ptr<Potential> potential)
       : kind_(kind), potential_(std::move(potential)) {}
   InteractionKind kind() const override { return kind_; }
-  // Evaluates the potential (a user's callback may throw Error(callback)).
+  // Both evaluate the potential (a user's callback may throw Error(callback)).
+  double contact_fraction(const Grid &grid, const ContactState &state) const override;
   double energy(const Grid &grid, const ContactState &state) const override;
 
   const Potential &potential() const { return *potential_; }
   bool has_hard_wall() const { return kind_ == InteractionKind::user_potential_hard_wall; }
 
  private:
+  // phi and phi' at the state's gaps (clipped at the wall if there is one).
+  void evaluate_on(const Grid &grid, const ContactState &state, Field &phi, Field &slope) const;
+
   InteractionKind kind_;
   std::unique_ptr<Potential> potential_;
 };
