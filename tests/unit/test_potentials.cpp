@@ -2,8 +2,8 @@
 // wall against central differences and against their closed forms (minimum, depth, largest
 // tensile stress), continuous through their continuation thresholds and finite down to
 // -1e6 times their range; the same potentials in other units; the refusals of System's
-// setters; and the user's callback, whose failures throw Error(callback) and whose soft wall
-// is the built-in one.
+// setters; the user's callback, whose failures throw Error(callback) and whose soft wall is the
+// built-in one; and the units of a solve with each.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -16,6 +16,7 @@
 #include "physics/potential.hpp"
 #include "physics/system.hpp"
 #include "scene.hpp"
+#include "solvers/scene_units.hpp"
 
 namespace {
 
@@ -471,6 +472,32 @@ TEST(CallbackPotential, SystemEnergyMatchesTheBuiltInWall) {
 
   data.status = 3;
   expect_callback_error([&] { system.interaction_energy(); }, {"returned 3"});
+}
+
+// ---- the units of a solve -----------------------------------------------------------------------
+
+// A flat surface under penetration control takes the larger of K~(0) delta and the potential's
+// pressure scale; a user's potential has neither a pressure scale nor a range (both 0), and
+// its range is not checked against the length scale, which would refuse any solve.
+TEST(PotentialSceneUnits, EachPotentialGivesUnitsOfASolve) {
+  auto grid = asp_test::grid_2d(16, 16, 1.0, 1.0);
+  asp::System system(grid, 1.0);
+  const double delta = 1e-3;
+  const asp::SceneUnits hard = asp::scene_units(system, asp::Control::penetration, delta);
+
+  const double w = 0.5, z0 = 1e-3;
+  system.set_lennard_jones(w, z0);
+  const asp::SceneUnits lj = asp::scene_units(system, asp::Control::penetration, delta);
+  const double stress = asp::LennardJonesPotential(w, z0).pressure_scale();
+  ASSERT_GT(stress, hard.pressure);
+  EXPECT_NEAR(lj.pressure, stress, 1e-14 * stress);
+
+  CallbackData data = data_for(two_range_wall());
+  system.set_user_potential(soft_wall_callback, &data, false);
+  const asp::SceneUnits user = asp::scene_units(system, asp::Control::penetration, delta);
+  EXPECT_EQ(user.pressure, hard.pressure);
+  EXPECT_EQ(user.length, hard.length);
+  EXPECT_EQ(data.calls, 0);  // units are made without evaluating the potential
 }
 
 }  // namespace
