@@ -175,8 +175,7 @@ void CallbackPotential::evaluate(std::int64_t n, const double *gap, double *phi,
   const int status = function_(n, physical, phi, dphi, d2phi, user_data_);
   if (status != 0)
     throw Error(Status::callback,
-                "the potential callback returned " + std::to_string(status) +
-                    " (any value but 0 ends the solve)");
+                "the potential callback returned " + std::to_string(status) + " instead of 0");
   std::int64_t bad = first_not_finite(n, phi, dphi, d2phi);
   if (bad < n)
     throw Error(Status::callback, "the potential callback wrote " +

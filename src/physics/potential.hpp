@@ -140,8 +140,8 @@ class CallbackPotential final : public Potential {
   double length_ = 1.0;
   double pressure_ = 1.0;
   // The physical gaps of a copy in other units, kept between calls so that a solve does not
-  // allocate them at every evaluation. A potential belongs to one system, which is used from
-  // one thread at a time, so no lock guards it.
+  // allocate them at every evaluation. A potential serves one system or one solve, used from
+  // one thread at a time (as its handle is), so no lock guards it.
   mutable std::vector<double> physical_gap_;
 };
 
