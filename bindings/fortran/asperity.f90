@@ -40,6 +40,24 @@
 !     integer(c_int) :: stop                  ! 0 to go on, anything else cancels
 !   end function
 !   status = asp_solver_set_progress(solver, c_funloc(on_progress), c_loc(counter))
+!
+! A potential is the abstract interface asp_potential_fn: it writes phi, phi' and phi'' at n
+! gaps (physical units); d2phi is a C pointer, NULL when the solver does not need phi'':
+!
+!   function my_potential(n, gap, phi, dphi, d2phi, user_data) result(status) bind(c)
+!     integer(c_int64_t), value :: n
+!     real(c_double), intent(in) :: gap(n)
+!     real(c_double), intent(out) :: phi(n), dphi(n)
+!     type(c_ptr), value :: d2phi, user_data
+!     integer(c_int) :: status                ! 0 to go on, anything else ends the solve
+!     real(c_double), pointer :: curvature(:)
+!     ...
+!     if (c_associated(d2phi)) then
+!       call c_f_pointer(d2phi, curvature, [n])
+!       ...
+!     end if
+!   end function
+!   status = asp_system_set_potential(system, c_funloc(my_potential), c_null_ptr, 0_c_int)
 module asperity
   use, intrinsic :: iso_c_binding, only: c_int, c_int64_t, c_double, c_ptr, c_funptr, c_char, &
                                          c_null_char, c_associated, c_f_pointer
@@ -86,8 +104,9 @@ module asperity
             asp_topography_power_spectrum
   public :: asp_system_create, asp_system_create_free, asp_system_destroy, &
             asp_system_set_topography, &
-            asp_system_set_k0, asp_system_set_adhesion, asp_system_set_reference_pressure, &
-            asp_system_reset, &
+            asp_system_set_k0, asp_system_set_adhesion, asp_system_set_soft_wall, &
+            asp_system_set_lennard_jones, asp_system_set_hard_wall, asp_system_set_potential, &
+            asp_system_set_reference_pressure, asp_system_reset, &
             asp_system_get, asp_system_get_field
   public :: asp_algorithms
   public :: asp_solver_create, asp_solver_destroy, asp_solver_describe, asp_solver_set_option, &
@@ -97,7 +116,7 @@ module asperity
             asp_solver_iterations, asp_solver_evaluations, asp_solver_transforms, &
             asp_solver_final_error, asp_solver_converged, &
             asp_solver_elapsed_seconds, asp_solver_history_length, asp_solver_get_history
-  public :: asp_progress_fn
+  public :: asp_progress_fn, asp_potential_fn
   ! Helpers (see the top of this file)
   public :: asp_string
   public :: asp_status_text, asp_last_error_text, asp_version_text, asp_algorithms_text, &
@@ -115,6 +134,20 @@ module asperity
       real(c_double), value :: seconds, error
       type(c_ptr), value :: user_data
       integer(c_int) :: asp_progress_fn
+    end function
+  end interface
+
+  ! A user's potential: phi(gap(i)), phi'(gap(i)) and, if d2phi is not null, phi''(gap(i))
+  ! (d2phi points to n doubles then; reach them with c_f_pointer) for i = 1..n, in physical
+  ! units; return 0 to go on, anything else to end the solve (ASP_ERR_CALLBACK).
+  abstract interface
+    function asp_potential_fn(n, gap, phi, dphi, d2phi, user_data) bind(c)
+      import :: c_int, c_int64_t, c_double, c_ptr
+      integer(c_int64_t), value :: n
+      real(c_double), intent(in) :: gap(n)
+      real(c_double), intent(out) :: phi(n), dphi(n)
+      type(c_ptr), value :: d2phi, user_data
+      integer(c_int) :: asp_potential_fn
     end function
   end interface
 
@@ -305,6 +338,35 @@ module asperity
       type(c_ptr), value :: system
       real(c_double), value :: work_of_adhesion, range
       integer(c_int) :: asp_system_set_adhesion
+    end function
+    function asp_system_set_soft_wall(system, gamma_r, rho_r, gamma_a, rho_a) &
+        bind(c, name='asp_system_set_soft_wall')
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: system
+      real(c_double), value :: gamma_r, rho_r, gamma_a, rho_a
+      integer(c_int) :: asp_system_set_soft_wall
+    end function
+    function asp_system_set_lennard_jones(system, work_of_adhesion, equilibrium_distance) &
+        bind(c, name='asp_system_set_lennard_jones')
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: system
+      real(c_double), value :: work_of_adhesion, equilibrium_distance
+      integer(c_int) :: asp_system_set_lennard_jones
+    end function
+    function asp_system_set_hard_wall(system) bind(c, name='asp_system_set_hard_wall')
+      import :: c_int, c_ptr
+      type(c_ptr), value :: system
+      integer(c_int) :: asp_system_set_hard_wall
+    end function
+    ! fn: c_funloc of a procedure with the interface asp_potential_fn.
+    function asp_system_set_potential(system, fn, user_data, hard_wall) &
+        bind(c, name='asp_system_set_potential')
+      import :: c_int, c_ptr, c_funptr
+      type(c_ptr), value :: system
+      type(c_funptr), value :: fn
+      type(c_ptr), value :: user_data
+      integer(c_int), value :: hard_wall
+      integer(c_int) :: asp_system_set_potential
     end function
     function asp_system_set_reference_pressure(system, reference_pressure) &
         bind(c, name='asp_system_set_reference_pressure')

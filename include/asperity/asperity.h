@@ -334,6 +334,83 @@ ASP_EXPORT int asp_system_set_k0(asp_system *system, double k0);
 ASP_EXPORT int asp_system_set_adhesion(asp_system *system, double work_of_adhesion,
                                        double range);
 
+/* Soft interactions. Each replaces the interaction (as asp_system_set_adhesion does): an
+ * energy per unit area phi(g) of the gap g, in the units of the system (lengths as the grid's
+ * and the heights, pressures as E*, phi an energy per unit area), whose total is
+ * a sum phi(g_i) (ASP_INTERACTION_ENERGY) and whose equilibrium pressure is p = -phi'(g).
+ * Unlike the hard wall, a soft wall lets the gap become negative: the surfaces interpenetrate
+ * as far as the repulsion lets them. Every one is defined for every finite gap, with finite
+ * phi, phi' and phi''. A pixel counts as in contact (ASP_CONTACT_FRACTION) where its pressure
+ * is positive (repulsive).
+ * Nothing else changes: the state is kept as it is, and the next solve starts from it;
+ * asp_system_reset starts cold. asp_system_set_hard_wall returns to the default.
+ * The solvers that take a soft wall without the hard wall (asp_system_set_soft_wall,
+ * asp_system_set_lennard_jones, asp_system_set_potential with hard_wall = 0) are the
+ * unconstrained solvers lbfgs, lbfgs_fourier, gfmd, fire, fire_mass_weighted; the others
+ * ("pk", "bugnicourt", "lbfgsb") refuse it before the solve with ASP_ERR_UNSUPPORTED naming
+ * the interaction and listing those they handle (as asp_solver_describe does). */
+
+/* The exponential soft wall (thesis eqs. 12-13):
+ *     phi(g) = gamma_r exp(-2g/rho_r) - gamma_a exp(-g/rho_a),
+ * a repulsion of strength gamma_r (energy per unit area) and range rho_r/2, and an attraction
+ * of strength gamma_a and range rho_a (lengths). With one range rho = rho_r = rho_a and
+ * gamma_a > 0 its minimum lies at g* = rho ln(2 gamma_r/gamma_a), with depth
+ * phi(g*) = -gamma_a^2/(4 gamma_r); with two ranges at
+ * g* = ln(2 gamma_r rho_a/(gamma_a rho_r)) / (2/rho_r - 1/rho_a). gamma_a = 0 is a purely
+ * repulsive wall. Each exponential is continued below the gap where its exponent reaches 40
+ * (g = -20 rho_r for the repulsion, g = -40 rho_a for the attraction) by its quadratic
+ * Taylor expansion there, so that deep interpenetration costs a finite, growing energy.
+ * Refused with ASP_ERR_INVALID_ARGUMENT, naming the argument: gamma_r, rho_r or rho_a not
+ * > 0 and finite; gamma_a negative or not finite; and (naming all four) a repulsion whose
+ * curvature 4 gamma_r/rho_r^2 does not exceed the attraction's gamma_a/rho_a^2, which would
+ * leave the energy without a lower bound as the surfaces interpenetrate. A refused call
+ * changes nothing. */
+ASP_EXPORT int asp_system_set_soft_wall(asp_system *system, double gamma_r, double rho_r,
+                                        double gamma_a, double rho_a);
+
+/* The Lennard-Jones 9-3 wall (a 12-6 pair potential integrated over a half-space), by its
+ * work of adhesion w = work_of_adhesion > 0 (energy per unit area) and its equilibrium
+ * distance z0 = equilibrium_distance > 0 (a length):
+ *     phi(g) = (w/2) [(z0/g)^9 - 3 (z0/g)^3],   g >= z0/2,
+ * whose minimum is phi(z0) = -w. Its largest tensile stress, max phi'(g) over g > z0, is
+ * (27/10) (2/5)^(2/3) w/z0, about 1.466 w/z0, at g = z0 (5/2)^(1/6), about 1.165 z0. Below
+ * the threshold g = z0/2 (where phi = 244 w) it is continued by its quadratic Taylor
+ * expansion there, phi'' = 91584 w/z0^2, so that zero and negative gaps have a finite energy
+ * and a repulsion that grows linearly with the interpenetration.
+ * Refused with ASP_ERR_INVALID_ARGUMENT, naming the argument: a work_of_adhesion or an
+ * equilibrium_distance that is not > 0 and finite; and (naming both) a largest tensile
+ * stress or a curvature at the threshold that is not a finite, normal double. A refused call
+ * changes nothing. */
+ASP_EXPORT int asp_system_set_lennard_jones(asp_system *system, double work_of_adhesion,
+                                            double equilibrium_distance);
+
+/* The plain, non-adhesive hard wall g >= 0, phi = 0 (the default): the same as
+ * asp_system_set_adhesion with work 0, from any interaction. */
+ASP_EXPORT int asp_system_set_hard_wall(asp_system *system);
+
+/* A user's potential, evaluated by a callback over many gaps at once: fn(n, gap, phi, dphi,
+ * d2phi, user_data) writes phi(gap[i]), phi'(gap[i]) and (if d2phi is not NULL) phi''(gap[i])
+ * for i = 0..n-1 and returns 0; d2phi is NULL when the solver does not need it. The gaps and
+ * values are in the system's units (physical, as the grid, heights and E*: a solve's internal
+ * scaling is undone around the call). It is called once per evaluation with all pixels, and
+ * only from the thread that calls asp_solver_solve (or asp_system_get for
+ * ASP_INTERACTION_ENERGY); it must not use the system or solver being solved. user_data is
+ * passed through untouched.
+ * A non-zero return, or a value written to phi, dphi or d2phi that is not finite, ends the
+ * solve with ASP_ERR_CALLBACK, naming the returned value or the first bad index and its gap;
+ * the system then goes back to the state the solve started from.
+ * hard_wall = 0: the potential alone, a soft wall; any other value: the hard wall g >= 0 with
+ * the potential acting on the open gap, as the exponential adhesion of
+ * asp_system_set_adhesion does. As its scales are not known beforehand, a solve takes its
+ * scales from the load and the heights only (set a reference pressure with
+ * asp_system_set_reference_pressure for a surface without slope). Solvers that do not handle
+ * a user potential refuse it before the solve with ASP_ERR_UNSUPPORTED.
+ * fn NULL: ASP_ERR_NULL_POINTER naming 'fn', and nothing changes. */
+typedef int (*asp_potential_fn)(int64_t n, const double *gap, double *phi, double *dphi,
+                                double *d2phi, void *user_data);
+ASP_EXPORT int asp_system_set_potential(asp_system *system, asp_potential_fn fn,
+                                        void *user_data, int hard_wall);
+
 /* The reference pressure that solver errors are divided by (see asp_solver_solve). Default 0:
  * use E* h'_rms/2, the rms pressure of full contact, the scale of local contact pressures at
  * any load (on a free system, h'_rms from the differences between neighbouring pixels inside
@@ -372,8 +449,10 @@ ASP_EXPORT int asp_system_reset(asp_system *system);
                                       REPULSIVE + ATTRACTIVE = ASP_TOTAL_FORCE */
 #define ASP_INTERACTION_ENERGY 313 /* a sum phi(g_i): 0 for the plain hard wall, <= 0 with
                                       adhesion */
-#define ASP_WORK_OF_ADHESION 314   /* w of asp_system_set_adhesion (0: no adhesion) */
-#define ASP_ADHESION_RANGE 315     /* rho of asp_system_set_adhesion (0: no adhesion) */
+#define ASP_WORK_OF_ADHESION 314   /* w of asp_system_set_adhesion (0: no adhesion, and 0 for
+                                      any other interaction, soft walls included) */
+#define ASP_ADHESION_RANGE 315     /* rho of asp_system_set_adhesion (0: no adhesion, and 0
+                                      for any other interaction, soft walls included) */
 ASP_EXPORT int asp_system_get(const asp_system *system, int key, double *value);
 
 /* Fields of the current state, copied into the caller's array of n = nx*ny doubles. */

@@ -1,6 +1,7 @@
 // asp_system_*: a contact problem, its parameters and its current state.
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "capi/constants.hpp"
 #include "capi/firewall.hpp"
@@ -56,6 +57,41 @@ int asp_system_set_adhesion(asp_system *system, double work_of_adhesion, double 
   return guarded("asp_system_set_adhesion", [&] {
     asp::require_not_null(system, "system");
     system->system->set_adhesion(work_of_adhesion, range);
+  });
+}
+
+int asp_system_set_soft_wall(asp_system *system, double gamma_r, double rho_r, double gamma_a,
+                             double rho_a) {
+  return guarded("asp_system_set_soft_wall", [&] {
+    asp::require_not_null(system, "system");
+    system->system->set_soft_wall(gamma_r, rho_r, gamma_a, rho_a);
+  });
+}
+
+int asp_system_set_lennard_jones(asp_system *system, double work_of_adhesion,
+                                 double equilibrium_distance) {
+  return guarded("asp_system_set_lennard_jones", [&] {
+    asp::require_not_null(system, "system");
+    system->system->set_lennard_jones(work_of_adhesion, equilibrium_distance);
+  });
+}
+
+int asp_system_set_hard_wall(asp_system *system) {
+  return guarded("asp_system_set_hard_wall", [&] {
+    asp::require_not_null(system, "system");
+    system->system->set_hard_wall();
+  });
+}
+
+// The library's own signature of the callback must stay the header's.
+static_assert(std::is_same<asp_potential_fn, asp::PotentialFunction>::value,
+              "asp_potential_fn and asp::PotentialFunction differ");
+
+int asp_system_set_potential(asp_system *system, asp_potential_fn fn, void *user_data,
+                             int hard_wall) {
+  return guarded("asp_system_set_potential", [&] {
+    asp::require_not_null(system, "system");
+    system->system->set_user_potential(fn, user_data, hard_wall != 0);
   });
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/checks.hpp"
+#include "core/error.hpp"
 #include "core/loops.hpp"
 
 namespace asp {
@@ -67,6 +68,148 @@ std::string SoftWallPotential::description() const {
          format_number(2.0 * repulsion_.range) + "; attraction " +
          format_number(-attraction_.coefficient) + ", range " +
          format_number(attraction_.range) + ")";
+}
+
+namespace {
+
+struct Terms {
+  double value, slope, curvature;
+};
+
+// The 9-3 potential itself, for g > 0, from u = z0/g:
+//   phi = (w/2)(u^9 - 3u^3), phi' = (9w/(2 z0)) u^4 (1 - u^6), phi'' = (9w/z0^2) u^5 (5u^6 - 2).
+Terms lennard_jones_at(double work, double distance, double g) {
+  const double u = distance / g, u3 = u * u * u, u6 = u3 * u3;
+  return {0.5 * work * u3 * (u6 - 3.0), 4.5 * work / distance * u3 * u * (1.0 - u6),
+          9.0 * work / (distance * distance) * u3 * u * u * (5.0 * u6 - 2.0)};
+}
+
+}  // namespace
+
+LennardJonesPotential::LennardJonesPotential(double work_of_adhesion, double equilibrium_distance)
+    : work_(work_of_adhesion), equilibrium_distance_(equilibrium_distance) {}
+
+void LennardJonesPotential::evaluate(std::int64_t n, const double *gap, double *phi,
+                                     double *dphi, double *d2phi) const {
+  const double w = work_, z0 = equilibrium_distance_;
+  const double start = threshold * z0;
+  const Terms at_start = lennard_jones_at(w, z0, start);
+  auto at = [=](double g) -> Terms {
+    if (g >= start) return lennard_jones_at(w, z0, g);
+    const double s = g - start;
+    return {at_start.value + s * (at_start.slope + 0.5 * s * at_start.curvature),
+            at_start.slope + s * at_start.curvature, at_start.curvature};
+  };
+  if (d2phi != nullptr) {
+    loops::for_each(n, [&](std::int64_t i) {
+      const Terms t = at(gap[i]);
+      phi[i] = t.value;
+      dphi[i] = t.slope;
+      d2phi[i] = t.curvature;
+    });
+  } else {
+    loops::for_each(n, [&](std::int64_t i) {
+      const Terms t = at(gap[i]);
+      phi[i] = t.value;
+      dphi[i] = t.slope;
+    });
+  }
+}
+
+std::unique_ptr<Potential> LennardJonesPotential::in_units(double length, double pressure) const {
+  return std::make_unique<LennardJonesPotential>(work_ / (pressure * length),
+                                                 equilibrium_distance_ / length);
+}
+
+double LennardJonesPotential::pressure_scale() const {
+  // phi' = (9w/(2 z0)) u^4 (1 - u^6) is largest where 4u^3 = 10u^9, u^6 = 2/5: there
+  // (9w/(2 z0)) (2/5)^(2/3) (3/5).
+  return 2.7 * std::pow(0.4, 2.0 / 3.0) * work_ / equilibrium_distance_;
+}
+
+std::string LennardJonesPotential::description() const {
+  return "Lennard-Jones 9-3 wall potential (work of adhesion " + format_number(work_) +
+         ", equilibrium distance " + format_number(equilibrium_distance_) + ")";
+}
+
+namespace {
+
+// The index of the first entry of phi, dphi or d2phi (if not null) that is not finite, or n.
+// A search that stops at the first, not an element-wise pass.
+std::int64_t first_not_finite(std::int64_t n, const double *phi, const double *dphi,
+                              const double *d2phi) {
+  for (std::int64_t i = 0; i < n; ++i)
+    if (!std::isfinite(phi[i]) || !std::isfinite(dphi[i]) ||
+        (d2phi != nullptr && !std::isfinite(d2phi[i])))
+      return i;
+  return n;
+}
+
+// "phi = nan" for the first output of entry i that is not finite.
+std::string bad_output(std::int64_t i, const double *phi, const double *dphi,
+                       const double *d2phi) {
+  if (!std::isfinite(phi[i])) return "phi = " + format_number(phi[i]);
+  if (!std::isfinite(dphi[i])) return "dphi = " + format_number(dphi[i]);
+  return "d2phi = " + format_number(d2phi[i]);
+}
+
+}  // namespace
+
+CallbackPotential::CallbackPotential(PotentialFunction function, void *user_data)
+    : function_(function), user_data_(user_data) {}
+
+CallbackPotential::CallbackPotential(PotentialFunction function, void *user_data, double length,
+                                     double pressure)
+    : function_(function), user_data_(user_data), length_(length), pressure_(pressure) {}
+
+void CallbackPotential::evaluate(std::int64_t n, const double *gap, double *phi, double *dphi,
+                                 double *d2phi) const {
+  const double *physical = gap;
+  if (length_ != 1.0) {
+    if (static_cast<std::int64_t>(physical_gap_.size()) != n) physical_gap_.assign(n, 0.0);
+    double *g = physical_gap_.data();
+    const double length = length_;
+    loops::for_each(n, [&](std::int64_t i) { g[i] = gap[i] * length; });
+    physical = g;
+  }
+  const int status = function_(n, physical, phi, dphi, d2phi, user_data_);
+  if (status != 0)
+    throw Error(Status::callback,
+                "the potential callback returned " + std::to_string(status) + " instead of 0");
+  std::int64_t bad = first_not_finite(n, phi, dphi, d2phi);
+  if (bad < n)
+    throw Error(Status::callback, "the potential callback wrote " +
+                                      bad_output(bad, phi, dphi, d2phi) + " at index " +
+                                      std::to_string(bad) + " (gap " +
+                                      format_number(physical[bad]) + ")");
+  if (length_ == 1.0 && pressure_ == 1.0) return;
+  const double energy = 1.0 / (pressure_ * length_), stress = 1.0 / pressure_,
+               stiffness = length_ / pressure_;
+  if (d2phi != nullptr) {
+    loops::for_each(n, [&](std::int64_t i) {
+      phi[i] *= energy;
+      dphi[i] *= stress;
+      d2phi[i] *= stiffness;
+    });
+  } else {
+    loops::for_each(n, [&](std::int64_t i) {
+      phi[i] *= energy;
+      dphi[i] *= stress;
+    });
+  }
+  // Finite values of the callback can still overflow in small units.
+  bad = first_not_finite(n, phi, dphi, d2phi);
+  if (bad < n)
+    throw Error(Status::callback,
+                "the potential callback's values at index " + std::to_string(bad) + " (gap " +
+                    format_number(physical[bad]) + ") overflow in the units of the solve (" +
+                    bad_output(bad, phi, dphi, d2phi) +
+                    "); rescale the potential or set a reference pressure");
+}
+
+std::unique_ptr<Potential> CallbackPotential::in_units(double length, double pressure) const {
+  return std::unique_ptr<Potential>(
+      new CallbackPotential(function_, user_data_, length_ * length, pressure_ * pressure));
 }
 
 }  // namespace asp

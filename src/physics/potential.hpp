@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace asp {
 
@@ -73,6 +74,75 @@ class SoftWallPotential final : public Potential {
  private:
   Exponential repulsion_;   // gamma_r exp(-g/(rho_r/2))
   Exponential attraction_;  // -gamma_a exp(-g/rho_a)
+};
+
+// phi(g) = (w/2) [(z0/g)^9 - 3 (z0/g)^3]: the 9-3 wall potential (a Lennard-Jones 12-6 pair
+// potential integrated over a half-space) by its work of adhesion w and equilibrium distance
+// z0, whose minimum is phi(z0) = -w. Below g = z0/2, where the repulsion (z0/g)^9 would soon
+// overflow and is undefined at g <= 0, it is continued by its quadratic Taylor expansion at
+// z0/2 (phi = 244 w, phi' = -4536 w/z0, phi'' = 91584 w/z0^2 there). That parabola's vertex
+// lies above the threshold (at about 0.55 z0), so the continuation falls all the way up to
+// z0/2 and the minimum stays at z0.
+class LennardJonesPotential final : public Potential {
+ public:
+  // The continuation threshold as a fraction of z0.
+  static constexpr double threshold = 0.5;
+
+  // w > 0, z0 > 0, finite (System checks them).
+  LennardJonesPotential(double work_of_adhesion, double equilibrium_distance);
+
+  void evaluate(std::int64_t n, const double *gap, double *phi, double *dphi,
+                double *d2phi) const override;
+  std::unique_ptr<Potential> in_units(double length, double pressure) const override;
+  // The largest tensile stress, max phi'(g) over g > z0: at the inflection point
+  // g = z0 (5/2)^(1/6), (27/10) (2/5)^(2/3) w/z0, about 1.466 w/z0.
+  double pressure_scale() const override;
+  double length_scale() const override { return equilibrium_distance_; }
+  std::string description() const override;
+
+  double work_of_adhesion() const { return work_; }
+  double equilibrium_distance() const { return equilibrium_distance_; }
+
+ private:
+  double work_;
+  double equilibrium_distance_;
+};
+
+// The signature of asp_potential_fn (asperity.h): phi, phi' and phi'' at n gaps at once, with
+// the caller's data; d2phi may be null; 0 to go on.
+using PotentialFunction = int (*)(std::int64_t n, const double *gap, double *phi, double *dphi,
+                                  double *d2phi, void *user_data);
+
+// A user's potential, given as a callback in physical units. evaluate() calls it once for all
+// gaps and throws Error(callback) if it returns non-zero or writes a value that is not finite.
+// A copy in other units (in_units) converts around the call: the gaps to physical lengths
+// before, phi, phi' and phi'' to the copy's units after.
+class CallbackPotential final : public Potential {
+ public:
+  // function not null (System checks it).
+  CallbackPotential(PotentialFunction function, void *user_data);
+
+  void evaluate(std::int64_t n, const double *gap, double *phi, double *dphi,
+                double *d2phi) const override;
+  std::unique_ptr<Potential> in_units(double length, double pressure) const override;
+  // Neither is known beforehand: 0.
+  double pressure_scale() const override { return 0.0; }
+  double length_scale() const override { return 0.0; }
+  std::string description() const override { return "user potential (a callback)"; }
+
+ private:
+  CallbackPotential(PotentialFunction function, void *user_data, double length, double pressure);
+
+  PotentialFunction function_;
+  void *user_data_;
+  // A gap of this potential is `length_` physical lengths; a pressure `pressure_` physical
+  // pressures (1 and 1 for the physical potential itself).
+  double length_ = 1.0;
+  double pressure_ = 1.0;
+  // The physical gaps of a copy in other units, kept between calls so that a solve does not
+  // allocate them at every evaluation. A potential serves one system or one solve, used from
+  // one thread at a time (as its handle is), so no lock guards it.
+  mutable std::vector<double> physical_gap_;
 };
 
 }  // namespace asp

@@ -166,6 +166,35 @@ void System::set_soft_wall(double repulsion, double repulsion_range, double attr
                                                     attraction_range));
 }
 
+void System::set_lennard_jones(double work_of_adhesion, double equilibrium_distance) {
+  require_positive(work_of_adhesion, "work_of_adhesion");
+  require_positive(equilibrium_distance, "equilibrium_distance");
+  const LennardJonesPotential potential(work_of_adhesion, equilibrium_distance);
+  // The stiffest the potential gets is at its continuation threshold; both scales must be
+  // doubles that a solve can divide by and square.
+  const double start = LennardJonesPotential::threshold * equilibrium_distance;
+  double phi = 0.0, slope = 0.0, curvature = 0.0;
+  potential.evaluate(1, &start, &phi, &slope, &curvature);
+  const double stress = potential.pressure_scale();
+  if (!std::isfinite(stress) || stress < DBL_MIN || !std::isfinite(curvature) ||
+      !std::isfinite(phi) || !std::isfinite(slope))
+    throw Error(Status::invalid_argument,
+                "arguments 'work_of_adhesion' " + format_number(work_of_adhesion) +
+                    " and 'equilibrium_distance' " + format_number(equilibrium_distance) +
+                    ": the largest tensile stress (about 1.466 w/z0 = " + format_number(stress) +
+                    ") or the curvature 91584 w/z0^2 at the continuation threshold z0/2 is not "
+                    "a finite, normal double; rescale the units");
+  set_potential(InteractionKind::lennard_jones,
+                std::make_unique<LennardJonesPotential>(work_of_adhesion, equilibrium_distance));
+}
+
+void System::set_user_potential(PotentialFunction function, void *user_data, bool hard_wall) {
+  if (function == nullptr) throw Error(Status::null_pointer, "argument 'fn' is NULL");
+  set_potential(hard_wall ? InteractionKind::user_potential_hard_wall
+                          : InteractionKind::user_potential,
+                std::make_unique<CallbackPotential>(function, user_data));
+}
+
 void System::set_potential(InteractionKind kind, std::unique_ptr<Potential> potential) {
   interaction_.reset(new PotentialInteraction(kind, std::move(potential)));
 }

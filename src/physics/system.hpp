@@ -45,6 +45,14 @@ class System {
   // (the repulsion outgrows the attraction inside the wall); refuses others with
   // Error(invalid_argument) naming the arguments.
   void set_soft_wall(double gamma_r, double rho_r, double gamma_a, double rho_a);
+  // The Lennard-Jones 9-3 wall phi(g) = (w/2) [(z0/g)^9 - 3 (z0/g)^3]
+  // (LennardJonesPotential): w and z0 positive and finite, and its largest tensile stress
+  // (about 1.466 w/z0) and its curvature at the continuation threshold z0/2 (91584 w/z0^2)
+  // finite, normal doubles; refuses others with Error(invalid_argument) naming the arguments.
+  void set_lennard_jones(double work_of_adhesion, double equilibrium_distance);
+  // A user's potential (CallbackPotential), with the hard wall g >= 0 or without it. Refuses
+  // a null function with Error(null_pointer) naming 'fn'.
+  void set_user_potential(PotentialFunction function, void *user_data, bool hard_wall);
   // Any potential, as an interaction of the given kind (soft_wall, lennard_jones,
   // user_potential or user_potential_hard_wall). As for set_adhesion, the state is kept.
   void set_potential(InteractionKind kind, std::unique_ptr<Potential> potential);

@@ -99,7 +99,7 @@ void check_request(const AlgorithmSpec &algorithm, const OptionValues &options,
                                          " (it works on: " + names(s, substrate_name) + ")");
   const auto &i = offer.interactions;
   const std::string interaction = interaction_name(system.interaction().kind());
-  const bool vowel = interaction.find_first_of("aeiou") == 0;
+  const bool vowel = interaction.find_first_of("aeio") == 0;  // "a user potential"
   if (std::find(i.begin(), i.end(), system.interaction().kind()) == i.end())
     throw Error(Status::unsupported, solver + " does not handle " + (vowel ? "an " : "a ") +
                                          interaction +

@@ -65,11 +65,15 @@ SceneUnits scene_units(const System &system, Control control, double value) {
                       "rescale the adhesion or set a reference pressure");
   }
   if (soft != nullptr) {
-    // Its pressures and range must be representable in these units, with room to spare.
+    // Its pressures and range must be representable in these units, with room to spare. A
+    // user's potential has no range known beforehand (length scale 0): its values are
+    // checked as they come instead.
     stress = tensile_stress / units.pressure;
-    const double range_scaled = soft->potential().length_scale() / units.length;
-    if (!(stress <= largest_scaled) || !(range_scaled <= largest_scaled) ||
-        !(range_scaled >= 1.0 / largest_scaled))
+    const double length_scale = soft->potential().length_scale();
+    const double range_scaled = length_scale / units.length;
+    const bool range_fits = length_scale == 0.0 || (range_scaled <= largest_scaled &&
+                                                    range_scaled >= 1.0 / largest_scaled);
+    if (!(stress <= largest_scaled) || !range_fits)
       throw Error(Status::invalid_argument,
                   "the " + soft->potential().description() +
                       " is out of proportion with the scene's pressure scale " +

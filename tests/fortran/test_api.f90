@@ -1,15 +1,18 @@
 ! The public interface through the Fortran module: a Hertzian sphere solved with "pk", options
 ! set by name (and refused by name), the history, a progress callback written in Fortran that
 ! cancels the solve, a solve to convergence, the texts that come back in buffers, FFTW wisdom,
-! the scalar results, and a free (non-periodic) half-space. Prints every failed check and exits
-! non-zero if there was one.
+! the scalar results, a free (non-periodic) half-space, and the soft potentials (the soft wall,
+! the Lennard-Jones wall, a potential written in Fortran as a bind(c) callback, the hard wall
+! back). Prints every failed check and exits non-zero if there was one.
 module api_checks
-  use, intrinsic :: iso_c_binding, only: c_int, c_int64_t, c_double, c_ptr, c_f_pointer
+  use, intrinsic :: iso_c_binding, only: c_int, c_int64_t, c_double, c_ptr, c_f_pointer, &
+                                         c_associated
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use asperity
   implicit none
   private
-  public :: progress_counter, count_and_cancel, expect, expect_status, failures
+  public :: progress_counter, count_and_cancel, soft_wall, soft_wall_potential, expect, &
+            expect_status, failures
 
   ! What the progress callback sees through its user data.
   type, bind(c) :: progress_counter
@@ -19,6 +22,13 @@ module api_checks
     integer(c_int64_t) :: bad_values = 0     ! calls with negative or decreasing seconds, or
                                              ! a non-finite or negative error
     real(c_double) :: last_seconds = 0
+  end type
+
+  ! The parameters of asp_system_set_soft_wall, for a potential that computes it, and its
+  ! calls so far.
+  type, bind(c) :: soft_wall
+    real(c_double) :: gamma_r, rho_r, gamma_a, rho_a
+    integer(c_int64_t) :: calls = 0
   end type
 
   integer :: failures = 0
@@ -41,6 +51,31 @@ contains
     counter%calls = counter%calls + 1
     cancel = 0
     if (counter%calls == counter%cancel_after) cancel = 1
+  end function
+
+  ! An asp_potential_fn: the soft wall gamma_r exp(-2g/rho_r) - gamma_a exp(-g/rho_a) of the
+  ! soft_wall that user_data points to (above its continuation thresholds: the tests' gaps are
+  ! not negative).
+  function soft_wall_potential(n, gap, phi, dphi, d2phi, user_data) result(status) bind(c)
+    integer(c_int64_t), value :: n
+    real(c_double), intent(in) :: gap(n)
+    real(c_double), intent(out) :: phi(n), dphi(n)
+    type(c_ptr), value :: d2phi, user_data
+    integer(c_int) :: status
+    type(soft_wall), pointer :: wall
+    real(c_double), pointer :: curvature(:)
+    real(c_double) :: repulsion(n), attraction(n)
+    call c_f_pointer(user_data, wall)
+    wall%calls = wall%calls + 1
+    repulsion = wall%gamma_r * exp(-2 * gap / wall%rho_r)
+    attraction = wall%gamma_a * exp(-gap / wall%rho_a)
+    phi = repulsion - attraction
+    dphi = -2 * repulsion / wall%rho_r + attraction / wall%rho_a
+    if (c_associated(d2phi)) then
+      call c_f_pointer(d2phi, curvature, [n])
+      curvature = 4 * repulsion / wall%rho_r**2 - attraction / wall%rho_a**2
+    end if
+    status = 0
   end function
 
   subroutine expect(condition, what)
@@ -82,6 +117,7 @@ program test_api
   type(c_ptr) :: grid, system, solver, no_solver, adhesive_solver, free_system, line, no_system, &
                  lbfgsb
   type(progress_counter), target :: counter
+  type(soft_wall), target :: wall
   real(c_double), allocatable :: heights(:, :), pressure(:, :), column(:)
   real(c_double), allocatable :: seconds(:), errors(:), evaluations(:), transforms(:)
   character(len=:), allocatable :: text, names
@@ -396,6 +432,53 @@ program test_api
   call expect(abs(scalar - mean_pressure) <= 1d-6 * mean_pressure, &
               'lbfgsb finds the load of the penetration')
   call asp_solver_destroy(lbfgsb)
+
+  ! ---- soft potentials: the soft wall, the Lennard-Jones wall, a Fortran callback ----
+  wall = soft_wall(1d-4, 2d-3, 5d-5, 2d-3)
+  call expect_status(asp_system_set_soft_wall(system, wall%gamma_r, wall%rho_r, wall%gamma_a, &
+                     wall%rho_a), ASP_OK, 'asp_system_set_soft_wall')
+  call expect_status(asp_system_get(system, ASP_INTERACTION_ENERGY, scalar), ASP_OK, &
+                     'asp_system_get(INTERACTION_ENERGY) of the soft wall')
+  call expect_status(asp_solver_solve(solver, system, ASP_CONTROL_MEAN_PRESSURE, mean_pressure), &
+                     ASP_ERR_UNSUPPORTED, 'pk refuses a soft wall')
+  call expect(index(asp_last_error_text(), 'soft wall') > 0, &
+              'the message names the interaction: ' // asp_last_error_text())
+  call expect_status(asp_system_set_soft_wall(system, wall%gamma_r, -1d0, wall%gamma_a, &
+                     wall%rho_a), ASP_ERR_INVALID_ARGUMENT, 'asp_system_set_soft_wall, rho_r < 0')
+  call expect(index(asp_last_error_text(), "'rho_r'") > 0, &
+              'the message names rho_r: ' // asp_last_error_text())
+
+  call expect_status(asp_system_set_lennard_jones(system, 1d-4, 2d-3), ASP_OK, &
+                     'asp_system_set_lennard_jones')
+  call expect_status(asp_system_set_lennard_jones(system, 1d-4, 0d0), ASP_ERR_INVALID_ARGUMENT, &
+                     'asp_system_set_lennard_jones, z0 = 0')
+  call expect(index(asp_last_error_text(), "'equilibrium_distance'") > 0, &
+              'the message names equilibrium_distance: ' // asp_last_error_text())
+  call expect_status(asp_solver_solve(solver, system, ASP_CONTROL_MEAN_PRESSURE, mean_pressure), &
+                     ASP_ERR_UNSUPPORTED, 'pk refuses a Lennard-Jones wall')
+
+  call expect_status(asp_system_set_potential(system, c_funloc(soft_wall_potential), &
+                     c_loc(wall), 0_c_int), ASP_OK, 'asp_system_set_potential')
+  call expect_status(asp_system_get(system, ASP_INTERACTION_ENERGY, value), ASP_OK, &
+                     'asp_system_get(INTERACTION_ENERGY) of the Fortran potential')
+  call expect(wall%calls == 1, 'the potential is called once for all pixels')
+  ! The same sum of the same terms as the built-in wall's, to rounding.
+  call expect(abs(value - scalar) <= 1d-13 * abs(scalar) .and. scalar /= 0, &
+              'the Fortran soft wall has the built-in one''s energy')
+  call expect_status(asp_system_set_potential(system, c_null_funptr, c_null_ptr, 0_c_int), &
+                     ASP_ERR_NULL_POINTER, 'asp_system_set_potential without a function')
+  call expect(index(asp_last_error_text(), "'fn'") > 0, &
+              'the message names fn: ' // asp_last_error_text())
+  call expect_status(asp_system_set_potential(system, c_funloc(soft_wall_potential), &
+                     c_loc(wall), 1_c_int), ASP_OK, 'asp_system_set_potential with the hard wall')
+  call expect_status(asp_solver_solve(solver, system, ASP_CONTROL_MEAN_PRESSURE, mean_pressure), &
+                     ASP_ERR_UNSUPPORTED, 'pk refuses a user potential')
+
+  call expect_status(asp_system_set_hard_wall(system), ASP_OK, 'asp_system_set_hard_wall')
+  call expect_status(asp_solver_solve(solver, system, ASP_CONTROL_MEAN_PRESSURE, mean_pressure), &
+                     ASP_OK, 'pk on the hard wall again')
+  call expect_status(asp_solver_converged(solver, converged), ASP_OK, 'asp_solver_converged')
+  call expect(converged == 1, 'pk converges on the hard wall again')
 
   ! ---- FFTW wisdom ----
   call expect_status(asp_fft_export_wisdom_f(wisdom_file), ASP_OK, 'asp_fft_export_wisdom_f')
