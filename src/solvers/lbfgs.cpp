@@ -1,5 +1,6 @@
 #include "solvers/lbfgs.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -108,7 +109,7 @@ class Lbfgs {
   // + k) mod memory.
   int slot(int k) const { return (newest_ - pairs_ + 1 + k + 2 * memory_) % memory_; }
 
-  // Along d from x, for the strong Wolfe conditions, from the unit step. On success x, g and
+  // Along d from x, for the strong Wolfe conditions. On success x, g and
   // value_ are the accepted point's and x_old the previous one.
   Search line_search() {
     if (!std::isfinite(slope_)) return Search::not_finite;
@@ -119,8 +120,13 @@ class Lbfgs {
     const auto move_to = [&](double step) {
       loops::for_each(n_, [&](std::int64_t i) { x[i] = x_old[i] + step * d[i]; });
     };
+    // Without pairs the direction is the gradient, whose scale says nothing about the step:
+    // the first trial is then 1/|d| (capped at 1), as in L-BFGS-B, so that a start deep inside
+    // a stiff wall, with forces of any size, is not met with a step of any size.
+    double first = 1.0;
+    if (pairs_ == 0) first = std::min(1.0, 1.0 / std::sqrt(dot(d_, d_)));
     StrongWolfeSearch search(sufficient_decrease, curvature_condition, interval_width);
-    StrongWolfeSearch::Outcome outcome = search.start(value_, slope_, 1.0, largest_step);
+    StrongWolfeSearch::Outcome outcome = search.start(value_, slope_, first, largest_step);
     for (int evaluation = 0; evaluation < evaluations_per_search; ++evaluation) {
       move_to(search.step());
       const double value = f_.value_and_gradient(x, trial_gradient_.data());
