@@ -115,7 +115,7 @@ program test_api
   character(len=*), parameter :: wisdom_file = 'fortran_api.wisdom'
 
   type(c_ptr) :: grid, system, solver, no_solver, adhesive_solver, free_system, line, no_system, &
-                 lbfgsb
+                 lbfgsb, soft_solver
   type(progress_counter), target :: counter
   type(soft_wall), target :: wall
   real(c_double), allocatable :: heights(:, :), pressure(:, :), column(:)
@@ -465,6 +465,33 @@ program test_api
   ! The same sum of the same terms as the built-in wall's, to rounding.
   call expect(abs(value - scalar) <= 1d-13 * abs(scalar) .and. scalar /= 0, &
               'the Fortran soft wall has the built-in one''s energy')
+  ! Solved with the Fortran potential and with the built-in wall, by the preconditioned
+  ! L-BFGS under the same load: the same mean gap, to what the tolerance leaves.
+  call expect_status(asp_solver_create('lbfgs_fourier' // c_null_char, soft_solver), ASP_OK, &
+                     'asp_solver_create(lbfgs_fourier)')
+  call expect_status(asp_solver_set_tolerance(soft_solver, tolerance), ASP_OK, &
+                     'asp_solver_set_tolerance(lbfgs_fourier)')
+  call expect_status(asp_system_reset(system), ASP_OK, 'asp_system_reset')
+  call expect_status(asp_solver_solve(soft_solver, system, ASP_CONTROL_MEAN_PRESSURE, &
+                     mean_pressure), ASP_OK, 'lbfgs_fourier with the Fortran potential')
+  call expect_status(asp_solver_converged(soft_solver, converged), ASP_OK, &
+                     'asp_solver_converged(lbfgs_fourier)')
+  call expect(converged == 1, 'lbfgs_fourier converges with the Fortran potential')
+  call expect_status(asp_system_get(system, ASP_MEAN_GAP, value), ASP_OK, &
+                     'asp_system_get(MEAN_GAP) with the Fortran potential')
+  call expect_status(asp_system_set_soft_wall(system, wall%gamma_r, wall%rho_r, wall%gamma_a, &
+                     wall%rho_a), ASP_OK, 'asp_system_set_soft_wall again')
+  call expect_status(asp_system_reset(system), ASP_OK, 'asp_system_reset')
+  call expect_status(asp_solver_solve(soft_solver, system, ASP_CONTROL_MEAN_PRESSURE, &
+                     mean_pressure), ASP_OK, 'lbfgs_fourier with the built-in soft wall')
+  call expect_status(asp_system_get(system, ASP_MEAN_GAP, scalar), ASP_OK, &
+                     'asp_system_get(MEAN_GAP) with the built-in soft wall')
+  call expect(abs(value - scalar) <= 1d-8 * abs(scalar) .and. scalar > 0, &
+              'the Fortran potential gives the built-in wall''s solution')
+  call asp_solver_destroy(soft_solver)
+  call expect_status(asp_system_set_potential(system, c_funloc(soft_wall_potential), &
+                     c_loc(wall), 0_c_int), ASP_OK, 'asp_system_set_potential again')
+
   call expect_status(asp_system_set_potential(system, c_null_funptr, c_null_ptr, 0_c_int), &
                      ASP_ERR_NULL_POINTER, 'asp_system_set_potential without a function')
   call expect(index(asp_last_error_text(), "'fn'") > 0, &
