@@ -24,24 +24,61 @@ SoftWallPotential::Exponential::Terms SoftWallPotential::Exponential::at(double 
 SoftWallPotential::SoftWallPotential(double repulsion, double repulsion_range, double attraction,
                                      double attraction_range)
     : repulsion_{repulsion, 0.5 * repulsion_range},
-      attraction_{-attraction, attraction_range} {}
+      attraction_{-attraction, attraction_range},
+      one_range_(repulsion_range == attraction_range) {}
+
+namespace {
+
+// One exponential c exp(t), t = -g/r, continued beyond t0 = largest_exponent by
+// c e^t0 (1 + s + s^2/2), s = t - t0 (as SoftWallPotential::Exponential::at), without a branch:
+// e = exp(min(t, t0)) and s = max(t - t0, 0) give both parts.
+struct ExponentialTerm {
+  double value, slope, curvature;
+};
+inline ExponentialTerm exponential_term(double coefficient, double per_range, double e,
+                                        double s) {
+  const double ce = coefficient * e;
+  return {ce * (1.0 + s + 0.5 * s * s), -ce * (1.0 + s) * per_range,
+          ce * per_range * per_range};
+}
+
+}  // namespace
+
+template <bool with_curvature, bool one_range>
+void SoftWallPotential::evaluate_terms(std::int64_t n, const double *gap, double *phi,
+                                       double *dphi, double *d2phi) const {
+  // Without branches (a select each) or divisions. With one range, the repulsion's exponent is
+  // twice the attraction's: while it is below the threshold its exponential is the square of
+  // the attraction's, beyond it e^t0.
+  // Reciprocals, so that the loop multiplies instead of dividing.
+  const double cr = repulsion_.coefficient, per_rr = 1.0 / repulsion_.range;
+  const double ca = attraction_.coefficient, per_ra = 1.0 / attraction_.range;
+  const double t0 = largest_exponent, e0 = std::exp(largest_exponent);
+  loops::for_each(n, [&](std::int64_t i) {
+    const double ta = -gap[i] * per_ra, tr = -gap[i] * per_rr;
+    const double ea = std::exp(ta < t0 ? ta : t0);
+    const double er = one_range ? (tr < t0 ? ea * ea : e0) : std::exp(tr < t0 ? tr : t0);
+    const ExponentialTerm a = exponential_term(ca, per_ra, ea, ta > t0 ? ta - t0 : 0.0);
+    const ExponentialTerm r = exponential_term(cr, per_rr, er, tr > t0 ? tr - t0 : 0.0);
+    phi[i] = a.value + r.value;
+    dphi[i] = a.slope + r.slope;
+    if (with_curvature) d2phi[i] = a.curvature + r.curvature;
+  });
+}
 
 void SoftWallPotential::evaluate(std::int64_t n, const double *gap, double *phi, double *dphi,
                                  double *d2phi) const {
-  const Exponential r = repulsion_, a = attraction_;
+  // Each case its own loop, without a test inside.
   if (d2phi != nullptr) {
-    loops::for_each(n, [&](std::int64_t i) {
-      const Exponential::Terms tr = r.at(gap[i]), ta = a.at(gap[i]);
-      phi[i] = tr.value + ta.value;
-      dphi[i] = tr.slope + ta.slope;
-      d2phi[i] = tr.curvature + ta.curvature;
-    });
+    if (one_range_)
+      evaluate_terms<true, true>(n, gap, phi, dphi, d2phi);
+    else
+      evaluate_terms<true, false>(n, gap, phi, dphi, d2phi);
   } else {
-    loops::for_each(n, [&](std::int64_t i) {
-      const Exponential::Terms tr = r.at(gap[i]), ta = a.at(gap[i]);
-      phi[i] = tr.value + ta.value;
-      dphi[i] = tr.slope + ta.slope;
-    });
+    if (one_range_)
+      evaluate_terms<false, true>(n, gap, phi, dphi, nullptr);
+    else
+      evaluate_terms<false, false>(n, gap, phi, dphi, nullptr);
   }
 }
 
