@@ -11,8 +11,10 @@
 // fraction of the period (rho = 2.56e-4 x 1024 = 0.262 pixels) and the coefficients as
 // written, with E* = 1 and the pixel as units. The well of this potential lies at
 // g = rho ln(2 gamma_r/gamma_a) = 7.6 rho, its depth (the work of adhesion) is
-// gamma_a^2/(4 gamma_r). The scene is solved under penetration control at a penetration that
-// gives a contact fraction of about 10 % (found on this profile; --penetration overrides).
+// gamma_a^2/(4 gamma_r). The scene is solved under penetration control, the crest pressed to
+// a gap of -5 % of the height range (contact fraction 8 %). With a hundred times the range the
+// well lies a hundred times farther out, and the crest is moved out with it, to sit as deep
+// inside the well as before (contact 14 %). --penetration overrides.
 //
 // The 2D scene: N^2 pixels on a period of N, E* = 1, H = 0.8, no roll-off, short cutoff 8
 // pixels, rms slope 0.1, seed 1; the same potential with rho = 0.5 pixels and the Table 4
@@ -25,7 +27,10 @@
 // history; '-' if never), and the solver's memory per pixel.
 //
 // usage: asperity_soft_wall_benchmark [--scene table4|table4-long|rough] [--size N]
-//                                     [--tolerance T] [--penetration D] [SOLVER ...]
+//                                     [--tolerance T] [--penetration D]
+//                                     [--max-iterations M] [--option NAME=VALUE ...]
+//                                     [SOLVER ...]
+//        (--option sets a numeric option on every listed solver that has it)
 //        (defaults: table4; size 1024 (table4) or 512 (rough); tolerance 1e-10 for 1D, 1e-8
 //         for 2D; the five unconstrained solvers)
 #include <algorithm>
@@ -35,6 +40,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bench/bench_common.hpp"
@@ -51,6 +57,8 @@ struct Options {
   long size = 0;
   double tolerance = 0.0;
   double penetration = std::numeric_limits<double>::quiet_NaN();
+  double max_iterations = 200000;
+  std::vector<std::pair<std::string, double>> options;
   std::vector<std::string> solvers;
 };
 
@@ -89,7 +97,14 @@ void compare(asp::System &system, double penetration, const Options &o, double t
     try {
       asp::Solver solver(name);
       solver.set_option("tolerance", tolerance);
-      solver.set_option("max_iterations", 200000.0);
+      solver.set_option("max_iterations", o.max_iterations);
+      for (const auto &option : o.options) {
+        try {
+          solver.set_option(option.first, option.second);
+        } catch (const asp::Error &) {
+          // Not an option of this solver.
+        }
+      }
       solver.set_option("stall_window", 20000.0);
       solver.set_history(true);
       system.reset_state();
@@ -163,8 +178,13 @@ void table4(const Options &o, double range_factor) {
   asp::System system(grid, 1.0);
   system.set_topography(heights.data());
   set_table4_potential(system, rc, rho);
-  const double penetration =
-      std::isnan(o.penetration) ? 0.05 * system.height_range() : o.penetration;
+  // The crest at the same depth inside the potential's well, g* = rho ln(2 gamma_r/gamma_a),
+  // whatever the range: at a gap of -5 % of the height range with Table 4's range.
+  const double well = std::log(2.0 * 2.10e3 / 2.05);
+  const double penetration = std::isnan(o.penetration)
+                                 ? 0.05 * system.height_range() - (range_factor - 1.0) *
+                                                                      2.56e-4 * period * well
+                                 : o.penetration;
   const double tolerance = o.tolerance > 0.0 ? o.tolerance : 1e-10;
   const double fft_pair = bench::fft_pair_seconds(*grid);
   grid->half_complex_fft();  // planned before any solve is timed, as the r2c plans above
@@ -217,6 +237,7 @@ void rough(const Options &o) {
 int usage(const char *program) {
   std::fprintf(stderr,
                "usage: %s [--scene table4|table4-long|rough] [--size N] [--tolerance T] "
+               "[--max-iterations M] [--option NAME=VALUE] "
                "[--penetration D] [SOLVER ...]\n",
                program);
   return 2;
@@ -236,6 +257,15 @@ int main(int argc, char **argv) {
     } else if (arg == "--size" && has_value) {
       o.size = std::strtol(argv[++i], nullptr, 10);
       if (o.size < 8 || o.size > 16384) return usage(argv[0]);
+    } else if (arg == "--option" && has_value) {
+      const std::string option = argv[++i];
+      const std::size_t equals = option.find('=');
+      if (equals == std::string::npos) return usage(argv[0]);
+      o.options.emplace_back(option.substr(0, equals),
+                             std::strtod(option.c_str() + equals + 1, nullptr));
+    } else if (arg == "--max-iterations" && has_value) {
+      o.max_iterations = std::strtod(argv[++i], nullptr);
+      if (!(o.max_iterations >= 1)) return usage(argv[0]);
     } else if (arg == "--tolerance" && has_value) {
       o.tolerance = std::strtod(argv[++i], nullptr);
       if (!(o.tolerance > 0.0)) return usage(argv[0]);

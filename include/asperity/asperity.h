@@ -68,8 +68,11 @@
  * solve adds the work arrays of its algorithm ("pk": 36 bytes per pixel, "bugnicourt": 60 on
  * the pressure and on the gap, "lbfgsb": 52 + 16 per pair of its "memory", 132 with the
  * default 5, plus index lists and a heap of breakpoints, measured 6 bytes per pixel on the
- * pressure and 28 on the gap; see docs/performance.md); a grid adds FFTW's plans. A request
- * whose arrays cannot be allocated returns ASP_ERR_OUT_OF_MEMORY and changes nothing.
+ * pressure and 28 on the gap; the unconstrained solvers, measured: "lbfgs" 240 and
+ * "lbfgs_fourier" 272 with the default memory of 10 (16 per pair), "fire" 64,
+ * "fire_mass_weighted" and "gfmd" 92; see docs/performance.md); a grid adds FFTW's plans. A
+ * request whose arrays cannot be allocated returns ASP_ERR_OUT_OF_MEMORY and changes
+ * nothing.
  *
  * ---------------------------------------------------------------------------------------------
  * Threads
@@ -340,8 +343,11 @@ ASP_EXPORT int asp_system_set_adhesion(asp_system *system, double work_of_adhesi
  * a sum phi(g_i) (ASP_INTERACTION_ENERGY) and whose equilibrium pressure is p = -phi'(g).
  * Unlike the hard wall, a soft wall lets the gap become negative: the surfaces interpenetrate
  * as far as the repulsion lets them. Every one is defined for every finite gap, with finite
- * phi, phi' and phi''. A pixel counts as in contact (ASP_CONTACT_FRACTION) where its pressure
- * is positive (repulsive).
+ * phi, phi' and phi''. A pixel counts as in contact (ASP_CONTACT_FRACTION) where the
+ * potential repels, phi'(g) < 0 (at equilibrium where its pressure is positive; far from
+ * contact the equilibrium pressure is an attraction below rounding, whose sign would be
+ * noise); with the hard wall (asp_system_set_potential with hard_wall != 0) where the
+ * pressure is positive, as for the other hard walls.
  * Nothing else changes: the state is kept as it is, and the next solve starts from it;
  * asp_system_reset starts cold. asp_system_set_hard_wall returns to the default.
  * The solvers that take a soft wall without the hard wall (asp_system_set_soft_wall,
@@ -499,7 +505,32 @@ typedef struct asp_solver asp_solver;
  *                 impose a mean, so mean-pressure and mean-gap control are refused with
  *                 ASP_ERR_UNSUPPORTED. Option "memory" (integer in [1, 100], default 5): the
  *                 correction pairs it keeps. Stops as stalled when even a steepest-descent
- *                 line search finds no decrease (the rounding floor). */
+ *                 line search finds no decrease (the rounding floor).
+ * The unconstrained solvers of soft potentials (the soft wall, the Lennard-Jones wall, a
+ * user's potential without the hard wall; they refuse the hard walls) minimise the elastic
+ * energy plus the interaction energy over the displacement, without bounds, under
+ * ASP_CONTROL_PENETRATION or ASP_CONTROL_MEAN_PRESSURE (the latter on a periodic substrate
+ * only; mean-gap control is refused):
+ *   "lbfgs"       L-BFGS (Nocedal 1980) with a strong Wolfe line search on the displacement;
+ *                 periodic or free substrate. Option "memory" (integer in [1, 100], default
+ *                 10).
+ *   "lbfgs_fourier"  L-BFGS on the displacement's spectrum scaled by sqrt(K~(q)), so that
+ *                 the elastic Hessian is the identity (the thesis's preconditioned L-BFGS),
+ *                 1D and 2D; periodic substrate. Option "memory" as "lbfgs". The fastest of
+ *                 the five on every scene measured (docs/performance.md).
+ *   "fire"        FIRE (Bitzek et al. 2006, with FIRE 2.0's half step back) on the
+ *                 displacement, equal masses; periodic or free substrate.
+ *   "fire_mass_weighted"  FIRE with masses proportional to K~(q) (Zhou et al. 2019): FIRE on
+ *                 the variable of "lbfgs_fourier"; periodic substrate.
+ *     Options of both FIREs: "time_step" (0: automatic, 1/sqrt of a bound on the largest
+ *     curvature at the start), "max_time_step" (0: automatic), "time_step_growth" (1.1),
+ *     "time_step_shrink" (0.5), "mixing" (0.1), "mixing_decay" (0.99), "delay" (5).
+ *   "gfmd"        damped Green's function molecular dynamics (mass-weighted; thesis Alg. 5)
+ *                 on the variable of "lbfgs_fourier"; periodic substrate. Options
+ *                 "time_step" (0: automatic, as FIRE's first step) and "damping" (2: the
+ *                 elastic modes critically damped). With a fixed step it needs many
+ *                 iterations from a start deep inside a stiff wall; raise "stall_window" for
+ *                 it on such scenes. */
 ASP_EXPORT int asp_solver_create(const char *algorithm, asp_solver **out);
 ASP_EXPORT void asp_solver_destroy(asp_solver *solver);
 

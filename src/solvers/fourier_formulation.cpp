@@ -10,36 +10,32 @@
 namespace asp {
 
 FourierFormulation::FourierFormulation(System &system, Control control, double value)
-    : SoftFormulation(system, control, value), fft_(system.grid().half_complex_fft()) {
+    : SoftFormulation(system, control, value) {
   if (substrate_.kind() != SubstrateKind::periodic)
     throw Error(Status::unsupported,
                 "the Fourier formulation works on a periodic half-space only: on a " +
                     std::string(substrate_name(substrate_.kind())) +
                     " the stiffness is not diagonal in the box's spectrum");
-  const auto n = static_cast<std::size_t>(n_);
-  variable_ = Field(n);
-  to_spectrum_ = Field(n);
-  to_gradient_ = Field(n);
-  elastic_ = Field(n, 1.0);
-  displacement_ = Field(n);
-  coefficients_ = Field(n);
-  residual_ = Field(n);
+  const SpectralLayout &layout = substrate_.layout();
+  entries_ = layout.size();
+  unknowns_ = 2 * entries_;
+  const auto entries = static_cast<std::size_t>(entries_);
+  variable_ = Field(2 * entries);
+  to_spectrum_ = Field(entries);
+  to_gradient_ = Field(entries);
+  elastic_ = Field(entries, 1.0);
+  displacement_ = Field(static_cast<std::size_t>(n_));
+  spectrum_ = substrate_.make_spectrum();
+  residual_ = Field(static_cast<std::size_t>(n_));
 
-  // s_k from the substrate's half spectrum: the coefficient (kx, ky) carries the frequencies
-  // (+-fx, +-fy), fx = min(kx, nx - kx), all of one |q|, stored at (fx, fy) of the r2c
-  // spectrum (whose stiffness includes the transform's 1/N).
-  const Grid &grid = grid_;
-  const SpectralLayout layout(Packing::half_complex, grid.nx(), grid.ny(), grid.lx(), grid.ly());
-  const std::int64_t nx = grid.nx(), ny = grid.ny(), row = nx / 2 + 1;
+  // s_k from the substrate's stiffness, which includes the transform's 1/N.
   const double *stiffness = substrate_.normalised_stiffness().data();
-  const double points = static_cast<double>(n_);
+  const double points = substrate_.transform_points();
   const double per_pixel = points / substrate_.pixel_stiffness();
   double *a = to_spectrum_.data(), *b = to_gradient_.data();
   largest_compliance_ = 0.0;
   layout.for_each([&](std::int64_t k, double, double weight) {
-    const std::int64_t kx = k % nx, ky = k / nx;
-    const std::int64_t fx = std::min(kx, nx - kx), fy = std::min(ky, ny - ky);
-    const double s = stiffness[fx + row * fy] * per_pixel;
+    const double s = stiffness[k] * per_pixel;
     a[k] = std::sqrt(points / (weight * s));
     b[k] = a[k] * weight / points;
     largest_compliance_ = std::max(largest_compliance_, 1.0 / s);
@@ -49,60 +45,73 @@ FourierFormulation::FourierFormulation(System &system, Control control, double v
   // The start: the state's displacement, transformed and scaled.
   double *u = displacement_.data();
   starting_displacement(u);
-  fft_.forward(u, coefficients_.data());
+  substrate_.forward(u, spectrum_.data());
   counters_.transforms += 1;
-  const double *c = coefficients_.data();
+  const Complex *U = spectrum_.data();
   double *v = variable_.data();
-  loops::for_each(n_, [&](std::int64_t k) { v[k] = c[k] / a[k]; });
+  loops::for_each(entries_, [&](std::int64_t k) {
+    v[2 * k] = U[k].real() / a[k];
+    v[2 * k + 1] = U[k].imag() / a[k];
+  });
+}
+
+void FourierFormulation::spectrum_of(const double *v) const {
+  // U = to_spectrum v, over N for the unnormalised backward transform.
+  Complex *U = spectrum_.data();
+  const double *a = to_spectrum_.data();
+  const double per_point = 1.0 / substrate_.transform_points();
+  loops::for_each(entries_, [&](std::int64_t k) {
+    U[k] = Complex(v[2 * k], v[2 * k + 1]) * (a[k] * per_point);
+  });
 }
 
 void FourierFormulation::displacement_of(const double *v, double *u) {
-  // u = HC2R(c)/N, c = to_spectrum v (HC2R is unnormalised).
-  double *c = coefficients_.data();
-  const double *a = to_spectrum_.data();
-  const double inverse_points = 1.0 / static_cast<double>(n_);
-  loops::for_each(n_, [&](std::int64_t k) { c[k] = a[k] * v[k] * inverse_points; });
-  fft_.backward(c, u);
+  spectrum_of(v);
+  substrate_.backward(spectrum_.data(), u);
   counters_.transforms += 1;
 }
 
+void FourierFormulation::add_transformed(const double *v, const double *field,
+                                         double *gradient) {
+  // Since the backward transform is the forward one's adjoint times the weights, the
+  // gradient of sum_i f(u_i) with respect to U_k is w_k R2C(f')_k / N (eqs. 69-73).
+  substrate_.forward(field, spectrum_.data());
+  counters_.transforms += 1;
+  const Complex *F = spectrum_.data();
+  const double *b = to_gradient_.data(), *elastic = elastic_.data();
+  loops::for_each(entries_, [&](std::int64_t k) {
+    gradient[2 * k] = elastic[k] * v[2 * k] + b[k] * F[k].real();
+    gradient[2 * k + 1] = elastic[k] * v[2 * k + 1] + b[k] * F[k].imag();
+  });
+}
+
 double FourierFormulation::value_and_gradient(const double *v, double *gradient) {
-  // E = (1/2) sum_k elastic_k v_k^2 + sum_i phi(g_i) + pbar sum_i u_i. Since HC2R is R2HC's
-  // transpose times the weights, the gradient of the potential's part with respect to c_k is
-  // w_k R2HC(phi' + pbar)_k / N (eqs. 69-73).
+  // E = (1/2) sum_k elastic_k |v_k|^2 + sum_i phi(g_i) + pbar sum_i u_i.
   double *u = displacement_.data();
   displacement_of(v, u);
   counters_.evaluations += 1;
   const double outside = interaction(u);
-  fft_.forward(dphi_.data(), gradient);
-  counters_.transforms += 1;
-  const double *b = to_gradient_.data(), *elastic = elastic_.data();
-  const double energy = 0.5 * loops::sum(grid_.reductions(), n_, [&](std::int64_t k) {
-    const double e = elastic[k] * v[k];
-    gradient[k] = e + b[k] * gradient[k];
-    return e * v[k];
+  add_transformed(v, dphi_.data(), gradient);
+  const double *elastic = elastic_.data();
+  const double energy = 0.5 * loops::sum(grid_.reductions(), entries_, [&](std::int64_t k) {
+    return elastic[k] * (v[2 * k] * v[2 * k] + v[2 * k + 1] * v[2 * k + 1]);
   });
   return energy + outside;
 }
 
 void FourierFormulation::hessian_product(const double *direction, double *product) {
-  // phi'' at the iterate, then A d in real space, times phi'', back: A^T = to_gradient R2HC.
+  // phi'' at the iterate, then A d in real space, times phi'', back: A^T = to_gradient R2C.
   interaction(displacement_.data(), true);
   Field real(static_cast<std::size_t>(n_));
   displacement_of(direction, real.data());
   const double *d2phi = d2phi_.data();
   double *r = real.data();
   loops::for_each(n_, [&](std::int64_t i) { r[i] *= d2phi[i]; });
-  fft_.forward(r, product);
-  counters_.transforms += 1;
-  const double *b = to_gradient_.data(), *elastic = elastic_.data();
-  loops::for_each(n_, [&](std::int64_t k) {
-    product[k] = elastic[k] * direction[k] + b[k] * product[k];
-  });
+  add_transformed(direction, r, product);
 }
 
 double FourierFormulation::gradient_at_zero(double *out) {
-  const Field zero(static_cast<std::size_t>(n_), 0.0);
+  const Field zero(static_cast<std::size_t>(unknowns_), 0.0);
   return value_and_gradient(zero.data(), out);
 }
 
@@ -114,12 +123,14 @@ double FourierFormulation::largest_curvature(bool with_interaction) {
 
 double FourierFormulation::error(const double *, const double *gradient) const {
   // The residual's spectrum is gradient_k N/(to_spectrum_k w_k) = gradient_k/to_gradient_k,
-  // and the residual HC2R of it over N.
-  double *c = coefficients_.data();
+  // and the residual its backward transform over N.
+  Complex *R = spectrum_.data();
   const double *b = to_gradient_.data();
-  const double inverse_points = 1.0 / static_cast<double>(n_);
-  loops::for_each(n_, [&](std::int64_t k) { c[k] = gradient[k] / b[k] * inverse_points; });
-  fft_.backward(c, residual_.data());
+  const double per_point = 1.0 / substrate_.transform_points();
+  loops::for_each(entries_, [&](std::int64_t k) {
+    R[k] = Complex(gradient[2 * k], gradient[2 * k + 1]) * (per_point / b[k]);
+  });
+  substrate_.backward(spectrum_.data(), residual_.data());
   counters_.transforms += 1;
   const double *r = residual_.data();
   return loops::maximum(grid_.reductions(), n_, [&](std::int64_t i) { return std::fabs(r[i]); });

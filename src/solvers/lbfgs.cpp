@@ -75,28 +75,47 @@ class Lbfgs {
 
   // d = -H g by the two-loop recursion over the stored pairs, newest first; H0 = gamma I
   // with gamma = s.y/y.y of the newest pair (1 without pairs: the formulations are scaled so
-  // that the elastic stiffness of a pixel, or of a mode, is 1).
+  // that the elastic stiffness of a pixel, or of a mode, is 1). Each pass over the fields
+  // applies one pair's update to d and sums the inner product the next step needs with the
+  // updated d, so that the recursion reads each stored field once: 2m + 1 passes for m
+  // pairs instead of 4m + 2.
   void two_loop_direction() {
     double *d = d_.data();
     const double *g = g_.data();
-    loops::for_each(n_, [&](std::int64_t i) { d[i] = -g[i]; });
-    for (int k = 0; k < pairs_; ++k) {
-      const int j = slot(pairs_ - 1 - k);
-      const double *y = y_[j].data();
-      const double a = rho_[j] * dot(s_[j], d_);
-      alpha_[j] = a;
-      loops::for_each(n_, [&](std::int64_t i) { d[i] -= a * y[i]; });
+    const Reductions &reductions = f_.reductions();
+    // d <- scale (d + c v), then the sum of w.d.
+    const auto update_then_dot = [&](double scale, double c, const double *v, const double *w) {
+      return loops::sum(reductions, n_, [&](std::int64_t i) {
+        d[i] = scale * (d[i] + c * v[i]);
+        return w[i] * d[i];
+      });
+    };
+    const int m = pairs_;
+    // The first loop, newest pair (k = 0) to oldest: a = rho s.d, d <- d - a y.
+    const auto newest_first = [&](int k) { return slot(m - 1 - k); };
+    const double *first = m > 0 ? s_[newest_first(0)].data() : g;
+    double product = loops::sum(reductions, n_, [&](std::int64_t i) {
+      d[i] = -g[i];
+      return first[i] * d[i];
+    });
+    for (int k = 0; k < m; ++k) {
+      const int j = newest_first(k);
+      alpha_[j] = rho_[j] * product;
+      // The last update of the first loop also applies H0 and starts the second loop, which
+      // needs the oldest pair's y.d.
+      const bool last = k + 1 == m;
+      const double *next = last ? y_[slot(0)].data() : s_[newest_first(k + 1)].data();
+      product = update_then_dot(last ? gamma_ : 1.0, -alpha_[j], y_[j].data(), next);
     }
-    const double gamma = pairs_ > 0 ? gamma_ : 1.0;
-    loops::for_each(n_, [&](std::int64_t i) { d[i] *= gamma; });
-    for (int k = 0; k < pairs_; ++k) {
+    // The second loop, oldest pair to newest: b = rho y.d, d <- d + (a - b) s; the last pass
+    // sums the slope g.d.
+    for (int k = 0; k < m; ++k) {
       const int j = slot(k);
-      const double *s = s_[j].data();
-      const double b = rho_[j] * dot(y_[j], d_);
-      const double a = alpha_[j];
-      loops::for_each(n_, [&](std::int64_t i) { d[i] += (a - b) * s[i]; });
+      const double b = rho_[j] * product;
+      const double *next = k + 1 == m ? g : y_[slot(k + 1)].data();
+      product = update_then_dot(1.0, alpha_[j] - b, s_[j].data(), next);
     }
-    slope_ = dot(g_, d_);
+    slope_ = product;
     if (!(slope_ < 0.0) && std::isfinite(slope_) && pairs_ > 0) {
       // Not a descent direction (the pairs no longer describe the curvature): steepest
       // descent, without the memory.

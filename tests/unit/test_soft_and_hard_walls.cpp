@@ -60,7 +60,9 @@ TEST(SoftAndHardWalls, ShortRangeSoftWallFollowsTheAdhesiveHardWallThroughALoadU
     constrained.solve(hard, Control::penetration, d);
     unconstrained.solve(soft, Control::penetration, d + g_star);
     ASSERT_TRUE(constrained.report().converged()) << d;
-    ASSERT_TRUE(unconstrained.report().converged()) << d;
+    ASSERT_TRUE(unconstrained.report().converged())
+        << d << ": " << termination_name(unconstrained.report().termination) << " after "
+        << unconstrained.report().iterations << ", error " << unconstrained.report().error;
     on_hard.push_back({hard.mean_pressure(), hard.contact_fraction()});
     on_soft.push_back({soft.mean_pressure(), soft.contact_fraction()});
   }
