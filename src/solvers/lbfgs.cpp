@@ -16,13 +16,8 @@ namespace {
 // The line search's parameters: sufficient decrease 1e-4 and curvature 0.9 (Nocedal &
 // Wright's choice for quasi-Newton methods, so that the unit step is nearly always taken),
 // interval width 0.1; at most 20 evaluations per search.
-constexpr double sufficient_decrease = 1e-4;
-constexpr double curvature_condition = 0.9;
-constexpr double interval_width = 0.1;
-constexpr int evaluations_per_search = 20;
+constexpr LineSearchSettings line_search_settings{1e-4, 0.9, 0.1, 20};
 constexpr double largest_step = 1e10;
-
-enum class Search { accepted, failed, not_finite };
 
 class Lbfgs {
  public:
@@ -48,12 +43,12 @@ class Lbfgs {
     if (monitor.should_stop(0, observe(f_, x_, g_.data(), value_, monitor))) return;
     for (std::int64_t iteration = 1;;) {
       two_loop_direction();
-      const Search search = line_search();
-      if (search == Search::not_finite) {
+      const LineSearchResult search = line_search();
+      if (search == LineSearchResult::not_finite) {
         monitor.declare_breakdown();
         return;
       }
-      if (search == Search::failed) {
+      if (search == LineSearchResult::failed) {
         // The memory's direction is no use (rounding near the solution, or pairs from a
         // region of other curvature): start again from steepest descent. Without pairs
         // there is no descent left short of the tolerance.
@@ -130,9 +125,9 @@ class Lbfgs {
 
   // Along d from x, for the strong Wolfe conditions. On success x, g and
   // value_ are the accepted point's and x_old the previous one.
-  Search line_search() {
-    if (!std::isfinite(slope_)) return Search::not_finite;
-    if (!(slope_ < 0.0)) return Search::failed;
+  LineSearchResult line_search() {
+    if (!std::isfinite(slope_)) return LineSearchResult::not_finite;
+    if (!(slope_ < 0.0)) return LineSearchResult::failed;
     double *x = x_, *x_old = x_old_.data();
     const double *d = d_.data();
     loops::for_each(n_, [&](std::int64_t i) { x_old[i] = x[i]; });
@@ -144,29 +139,16 @@ class Lbfgs {
     // a stiff wall, with forces of any size, is not met with a step of any size.
     double first = 1.0;
     if (pairs_ == 0) first = std::min(1.0, 1.0 / std::sqrt(dot(d_, d_)));
-    StrongWolfeSearch search(sufficient_decrease, curvature_condition, interval_width);
-    StrongWolfeSearch::Outcome outcome = search.start(value_, slope_, first, largest_step);
-    for (int evaluation = 0; evaluation < evaluations_per_search; ++evaluation) {
-      move_to(search.step());
-      const double value = f_.value_and_gradient(x, trial_gradient_.data());
-      const double slope = dot(trial_gradient_, d_);
-      if (!std::isfinite(value) || !std::isfinite(slope)) {
-        move_to(0.0);
-        return Search::not_finite;
-      }
-      outcome = search.next(comparable_value(value, slope, search.step(), value_, slope_), slope);
-      // A search stuck at the step 0 has found nothing.
-      const bool accepted = outcome == StrongWolfeSearch::Outcome::found ||
-                            (outcome == StrongWolfeSearch::Outcome::stuck &&
-                             search.sufficient_decrease() && search.step() > 0.0);
-      if (accepted) {
-        value_ = value;
-        return Search::accepted;
-      }
-      if (outcome == StrongWolfeSearch::Outcome::stuck) break;
-    }
-    move_to(0.0);
-    return Search::failed;
+    const LineSearchResult result = search_line(
+        line_search_settings, value_, slope_, first, largest_step,
+        [&](double step, double &value, double &slope) {
+          move_to(step);
+          value = f_.value_and_gradient(x, trial_gradient_.data());
+          slope = dot(trial_gradient_, d_);
+        },
+        &value_);
+    if (result != LineSearchResult::accepted) move_to(0.0);
+    return result;
   }
 
   // s = x - x_old, y = g_new - g enter the memory if s.y > 0 (the curvature condition, which

@@ -19,10 +19,7 @@ namespace {
 // The line search's parameters, L-BFGS-B's: sufficient decrease 1e-3, curvature 0.9 (loose,
 // as quasi-Newton methods want, so that the unit step is nearly always taken), interval
 // width 0.1; and at most 20 evaluations per search.
-constexpr double sufficient_decrease = 1e-3;
-constexpr double curvature_condition = 0.9;
-constexpr double interval_width = 0.1;
-constexpr int evaluations_per_search = 20;
+constexpr LineSearchSettings line_search_settings{1e-3, 0.9, 0.1, 20};
 // The largest step of a search along a direction no bound limits.
 constexpr double unbounded_step = 1e10;
 
@@ -365,28 +362,17 @@ class Lbfgsb {
     if (!(slope_ < 0.0)) return Search::no_descent;
     const double largest = first ? std::min(1.0, largest_step_) : largest_step_;
     const double step = first ? std::min(1.0 / direction_norm_, largest) : std::min(1.0, largest);
-    StrongWolfeSearch search(sufficient_decrease, curvature_condition, interval_width);
-    StrongWolfeSearch::Outcome outcome = search.start(value_, slope_, step, largest);
-    for (int evaluation = 0; evaluation < evaluations_per_search; ++evaluation) {
-      move_to(search.step());
-      const double value = f_.value_and_gradient(x_, trial_gradient_.data());
-      const double slope = f_.dot(trial_gradient_.data(), d_.data());
-      if (!std::isfinite(value) || !std::isfinite(slope)) {
-        move_to(0.0);
-        return Search::not_finite;
-      }
-      outcome = search.next(comparable_value(value, slope, search.step(), value_, slope_), slope);
-      const bool accepted = outcome == StrongWolfeSearch::Outcome::found ||
-                            (outcome == StrongWolfeSearch::Outcome::stuck &&
-                             search.sufficient_decrease());
-      if (accepted) {
-        value_ = value;
-        return Search::accepted;
-      }
-      if (outcome == StrongWolfeSearch::Outcome::stuck) break;
-    }
+    const LineSearchResult result = search_line(
+        line_search_settings, value_, slope_, step, largest,
+        [&](double trial, double &value, double &slope) {
+          move_to(trial);
+          value = f_.value_and_gradient(x_, trial_gradient_.data());
+          slope = f_.dot(trial_gradient_.data(), d_.data());
+        },
+        &value_);
+    if (result == LineSearchResult::accepted) return Search::accepted;
     move_to(0.0);
-    return Search::failed;
+    return result == LineSearchResult::not_finite ? Search::not_finite : Search::failed;
   }
 
   // x <- max(x_old + step d, lower): the bound holds bitwise whatever the rounding.
@@ -432,7 +418,8 @@ Offer offer_for(const OptionValues &options) {
   if (on_the_gap(options))
     return {{Control::penetration},
             {SubstrateKind::periodic, SubstrateKind::free},
-            {InteractionKind::hard_wall, InteractionKind::adhesive_hard_wall},
+            {InteractionKind::hard_wall, InteractionKind::adhesive_hard_wall,
+             InteractionKind::user_potential_hard_wall},
             "variable = gap"};
   return {{Control::penetration},
           {SubstrateKind::periodic, SubstrateKind::free},
@@ -476,11 +463,13 @@ AlgorithmSpec lbfgsb_algorithm() {
   spec.controls = {Control::penetration};
   spec.offer_for = offer_for;
   spec.substrates = {SubstrateKind::periodic, SubstrateKind::free};
-  spec.interactions = {InteractionKind::hard_wall, InteractionKind::adhesive_hard_wall};
+  spec.interactions = {InteractionKind::hard_wall, InteractionKind::adhesive_hard_wall,
+                       InteractionKind::user_potential_hard_wall};
   spec.options = {
       {"variable", OptionType::choice, 0.0, 0.0, 0.0, false, {"pressure", "gap"},
        "the unknown: pressure (the dual problem; no adhesion) or gap (the primal; with or "
-       "without adhesion); penetration control on either"},
+       "without adhesion, or a user's potential with the hard wall); penetration control on "
+       "either"},
       {"memory", OptionType::integer, 5, 1, 100, false, {},
        "the number of step and gradient-change pairs the quasi-Newton matrix keeps (16 bytes "
        "per pixel each)"},

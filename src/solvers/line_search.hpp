@@ -73,4 +73,40 @@ class StrongWolfeSearch {
   bool last_decreases_ = false;
 };
 
+// A whole search along a direction, for the quasi-Newton solvers: from phi(0) = value0 and
+// phi'(0) = slope0 < 0, trial steps from `first` (at most `largest`), each evaluated by
+// evaluate(step, value, slope), which moves the iterate to the step and writes phi and phi'
+// there, until a step is accepted: one that meets both conditions, or the best point of a
+// search that can go no further if it meets the sufficient decrease and is not the step 0.
+// Returns accepted (the iterate at that step, its value in *accepted_value), failed (none in
+// `evaluations` trials, or stuck without one) or not_finite (a value or slope that is not
+// finite); after the last two the caller moves the iterate back.
+struct LineSearchSettings {
+  double decrease, curvature, relative_width;
+  int evaluations;
+};
+enum class LineSearchResult { accepted, failed, not_finite };
+template <class Evaluate>
+LineSearchResult search_line(const LineSearchSettings &settings, double value0, double slope0,
+                             double first, double largest, Evaluate &&evaluate,
+                             double *accepted_value) {
+  StrongWolfeSearch search(settings.decrease, settings.curvature, settings.relative_width);
+  StrongWolfeSearch::Outcome outcome = search.start(value0, slope0, first, largest);
+  for (int evaluation = 0; evaluation < settings.evaluations; ++evaluation) {
+    double value = 0.0, slope = 0.0;
+    evaluate(search.step(), value, slope);
+    if (!std::isfinite(value) || !std::isfinite(slope)) return LineSearchResult::not_finite;
+    outcome = search.next(comparable_value(value, slope, search.step(), value0, slope0), slope);
+    const bool accepted = outcome == StrongWolfeSearch::Outcome::found ||
+                          (outcome == StrongWolfeSearch::Outcome::stuck &&
+                           search.sufficient_decrease() && search.step() > 0.0);
+    if (accepted) {
+      *accepted_value = value;
+      return LineSearchResult::accepted;
+    }
+    if (outcome == StrongWolfeSearch::Outcome::stuck) break;
+  }
+  return LineSearchResult::failed;
+}
+
 }  // namespace asp

@@ -22,8 +22,16 @@ PrimalFormulation::PrimalFormulation(System &system, Control control, double val
                     " the mean displacement is not a free mode whose energy can be left out; "
                     "use penetration control");
   penetration_ = control == Control::penetration ? target_ : 0.0;
+  const PotentialInteraction *user = potential_interaction(system.interaction());
+  if (user != nullptr && user->has_hard_wall())
+    potential_ = user->potential().in_units(length_unit_, pressure_unit_);
 
   // Work arrays before anything changes, so that running out of memory changes nothing.
+  if (potential_ != nullptr) {
+    phi_ = Field(static_cast<std::size_t>(n_));
+    dphi_ = Field(static_cast<std::size_t>(n_));
+    d2phi_ = Field(static_cast<std::size_t>(n_));
+  }
   displacement_ = Field(static_cast<std::size_t>(unknowns_));
   spectrum_ = substrate_.make_spectrum();
   if (unknowns_ > n_) {
@@ -101,6 +109,7 @@ void PrimalFormulation::elastic_pressure(const double *x, double *out) {
 
 double PrimalFormulation::value_and_gradient(const double *x, double *gradient) {
   // E = (1/2) u.p (+ sum_i phi(x_i) with adhesion), gradient p (+ phi'(x)), all scaled.
+  if (potential_ != nullptr) return value_and_gradient_of_potential(x, gradient);
   if (!adhesive_) return quadratic_part(x, gradient);
   elastic_pressure(x, gradient);
   counters_.evaluations += 1;
@@ -122,8 +131,27 @@ double PrimalFormulation::value_and_gradient(const double *x, double *gradient) 
   });
 }
 
+double PrimalFormulation::value_and_gradient_of_potential(const double *x, double *gradient) {
+  // As with adhesion, with the potential evaluated over the grid's gaps at once (a user's
+  // callback may throw Error(callback)).
+  elastic_pressure(x, gradient);
+  counters_.evaluations += 1;
+  potential_->evaluate(n_, x, phi_.data(), dphi_.data(), nullptr);
+  const double *u = displacement_.data(), *phi = phi_.data(), *dphi = dphi_.data();
+  const double beyond =
+      unknowns_ > n_ ? 0.5 * loops::sum(grid_.reductions(), unknowns_ - n_, [&](std::int64_t i) {
+        return u[n_ + i] * gradient[n_ + i];
+      })
+                     : 0.0;
+  return beyond + loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
+    const double elastic = 0.5 * u[i] * gradient[i];
+    gradient[i] += dphi[i];
+    return elastic + phi[i];
+  });
+}
+
 void PrimalFormulation::gradient(const double *x, double *gradient) {
-  if (adhesive_) {
+  if (adhesive_ || potential_ != nullptr) {
     value_and_gradient(x, gradient);
     return;
   }
@@ -156,6 +184,12 @@ double PrimalFormulation::quadratic_part_product(const double *direction, double
 
 void PrimalFormulation::hessian_product(const double *direction, double *product) {
   apply_stiffness(direction, product);
+  if (potential_ != nullptr) {
+    potential_->evaluate(n_, variable().data(), phi_.data(), dphi_.data(), d2phi_.data());
+    const double *d2phi = d2phi_.data();
+    loops::for_each(n_, [&](std::int64_t i) { product[i] += d2phi[i] * direction[i]; });
+    return;
+  }
   if (!adhesive_) return;
   // K d + phi''(x) d at the iterate x.
   const double *x = variable().data();
@@ -165,7 +199,9 @@ void PrimalFormulation::hessian_product(const double *direction, double *product
 
 double PrimalFormulation::curvature_bound(const double *direction,
                                           const double *product) const {
-  if (!adhesive_) return dot(direction, product);
+  // A user's potential bounds nothing: its d.H d at the iterate (the solvers that need a
+  // bound, bugnicourt's, do not take it).
+  if (!adhesive_ || potential_ != nullptr) return dot(direction, product);
   // phi'' < 0 everywhere, so the Hessian at any point is below K: d.K d bounds the
   // curvature along the whole line, and is d.H d less the interaction's part at x.
   const double *x = const_cast<PrimalFormulation *>(this)->variable().data();
@@ -188,6 +224,23 @@ double PrimalFormulation::contact_fraction(const double *x) const {
          n;
 }
 
+double PrimalFormulation::interaction_slopes(const double *gap, double *slope) {
+  if (potential_ == nullptr) {
+    const ExponentialPotential phi = adhesion_;
+    loops::for_each(n_, [&](std::int64_t i) { slope[i] = phi.dphi(gap[i] > 0.0 ? gap[i] : 0.0); });
+    return phi.dphi(0.0);
+  }
+  // The gaps clipped to the wall (the iterate's are >= 0 bitwise, but a warm start's need
+  // not be), then phi' at once, and at the wall.
+  double *clipped = d2phi_.data();
+  loops::for_each(n_, [&](std::int64_t i) { clipped[i] = gap[i] > 0.0 ? gap[i] : 0.0; });
+  potential_->evaluate(n_, clipped, phi_.data(), slope, nullptr);
+  const double zero = 0.0;
+  double phi0 = 0.0, slope0 = 0.0;
+  potential_->evaluate(1, &zero, &phi0, &slope0, nullptr);
+  return slope0;
+}
+
 bool PrimalFormulation::finish() {
   // The elastic pressure of the iterate, p = K u (scaled), into the state's pressure array
   // (on a surface beyond the grid, the grid's part of it; beyond, it is the residual).
@@ -201,16 +254,23 @@ bool PrimalFormulation::finish() {
   }
   double *g = state_.gap.data();
   // The interaction's pressure -phi'(g): 0 without adhesion; tensile, at most w/rho at the
-  // wall, with it. On the wall the pressure can be no lower than -phi'(0).
-  const ExponentialPotential phi = adhesion_;
-  const double wall_tension = adhesive_ ? -phi.dphi(0.0) : 0.0;
+  // wall, with it; a user's potential's own. On the wall the pressure can be no lower than
+  // -phi'(0). slope[i] is phi'(g_i) on the open pixels.
+  const bool interacting = adhesive_ || potential_ != nullptr;
+  Field slopes;
+  double wall_tension = 0.0;
+  if (interacting) {
+    slopes = Field(static_cast<std::size_t>(n_));
+    wall_tension = -interaction_slopes(g, slopes.data());
+  }
+  const double *slope = slopes.data();
   if (control_ == Control::mean_gap) {
     // The multiplier: on the free pixels K u + pbar + phi'(g) = 0 at the optimum, so pbar is
     // minus the mean of K u + phi'(g) there. With no free pixel (a mean gap of 0) any pbar
     // with p >= -phi'(0) on the wall fits; the smallest is taken.
     const auto s = loops::sums<2>(grid_.reductions(), n_, [&](std::int64_t i, double *sum) {
       const double free = g[i] > 0.0 ? 1.0 : 0.0;
-      const double interaction = adhesive_ && g[i] > 0.0 ? phi.dphi(g[i]) : 0.0;
+      const double interaction = interacting && g[i] > 0.0 ? slope[i] : 0.0;
       sum[0] += free * (p[i] + interaction);
       sum[1] += free;
     });
@@ -229,12 +289,13 @@ bool PrimalFormulation::finish() {
   // consistent and its contact set is that of the iterate.
   const double pressure = pressure_unit_, n = static_cast<double>(n_);
   const double mean_pressure =
-      adhesive_ ? loops::sum(grid_.reductions(), n_,
-                             [&](std::int64_t i) {
-                               const double on_wall = p[i] > wall_tension ? p[i] : wall_tension;
-                               p[i] = (g[i] > 0.0 ? -phi.dphi(g[i]) : on_wall) * pressure;
-                               return p[i] / n;
-                             })
+      interacting ? loops::sum(grid_.reductions(), n_,
+                               [&](std::int64_t i) {
+                                 const double on_wall =
+                                     p[i] > wall_tension ? p[i] : wall_tension;
+                                 p[i] = (g[i] > 0.0 ? -slope[i] : on_wall) * pressure;
+                                 return p[i] / n;
+                               })
                 : loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
                     const double clipped = g[i] > 0.0 ? 0.0 : (p[i] > 0.0 ? p[i] : 0.0);
                     p[i] = clipped * pressure;

@@ -1,4 +1,6 @@
 // The primal (gap) formulation of the hard-wall contact, with or without exponential adhesion
+// or a user's potential acting on the open gap (asp_system_set_potential with the hard wall,
+// evaluated over all pixels at once; L-BFGS-B takes it, Bugnicourt's solver does not)
 // (thesis section 2.2): minimise the elastic energy of the displacement that the gap makes
 // plus the interaction energy,
 //     E(g) = (a/2) u.K u + a sum_i phi(g_i),   u = g + h - max h + delta,   over g >= 0,
@@ -43,7 +45,7 @@ class PrimalFormulation final : public ScaledFormulation {
   // surface outside the box, unknowns free of the bound.
   Field &variable() override { return unknowns_ > n_ ? surface_unknowns_ : state_.gap; }
   std::int64_t bounded_size() const override { return n_; }
-  bool quadratic() const override { return !adhesive_; }
+  bool quadratic() const override { return !adhesive_ && potential_ == nullptr; }
   double value_and_gradient(const double *x, double *gradient) override;
   // Without adhesion, the elastic pressure without the energy's pass.
   void gradient(const double *x, double *gradient) override;
@@ -75,6 +77,10 @@ class PrimalFormulation final : public ScaledFormulation {
   // The scaled elastic pressure K u of the displacement the gap x makes, into out (u into
   // displacement_).
   void elastic_pressure(const double *x, double *out);
+  // value_and_gradient with a user's potential and the hard wall.
+  double value_and_gradient_of_potential(const double *x, double *gradient);
+  // phi'(g) of the interaction at the gaps (clipped at the wall) into slope; returns phi'(0).
+  double interaction_slopes(const double *gap, double *slope);
 
   const Field &stiffness_;  // normalised: backward(stiffness * forward(u)) = K u
   double penetration_;  // scaled, in u (0 under mean-gap control, where it does not matter)
@@ -82,6 +88,10 @@ class PrimalFormulation final : public ScaledFormulation {
   Field displacement_;  // over the whole surface
   Spectrum spectrum_;
   LocalTerm local_term_;
+  // A user's potential with the hard wall, in the solve's units (null otherwise), and its
+  // work arrays over the grid.
+  std::unique_ptr<Potential> potential_;
+  Field phi_, dphi_, d2phi_;
   // Only where the surface reaches beyond the grid (a free substrate): the unknowns, and the
   // pressure over the whole surface for finish().
   Field surface_unknowns_;

@@ -4,7 +4,9 @@
  * interaction energy of each against a sum of phi over the gap field; a C callback that fails
  * (non-zero return, NaN) reported as ASP_ERR_CALLBACK; the constrained solvers "pk",
  * "bugnicourt" and "lbfgsb" refusing soft walls with a message naming the solver and the
- * interaction; and the hard wall back, under which "pk" solves as before. */
+ * interaction; a user's potential with the hard wall solved by "lbfgsb" on the gap, the
+ * exponential adhesion as a callback giving the built-in adhesion's solution; and the hard
+ * wall back, under which "pk" solves as before. */
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -40,6 +42,24 @@ static int soft_wall_callback(int64_t n, const double *gap, double *phi, double 
   }
   if (w->nan_at >= 0 && w->nan_at < n) phi[w->nan_at] = NAN;
   return w->status;
+}
+
+/* The exponential adhesion of asp_system_set_adhesion, phi = -w exp(-g/rho) on g >= 0, as a
+ * user's potential for the hard wall. */
+typedef struct {
+  double work, range;
+} adhesion_data;
+
+static int adhesion_callback(int64_t n, const double *gap, double *phi, double *dphi,
+                             double *d2phi, void *user_data) {
+  const adhesion_data *a = (const adhesion_data *)user_data;
+  int64_t i;
+  for (i = 0; i < n; ++i) {
+    phi[i] = -a->work * exp(-gap[i] / a->range);
+    dphi[i] = -phi[i] / a->range;
+    if (d2phi != NULL) d2phi[i] = phi[i] / (a->range * a->range);
+  }
+  return 0;
 }
 
 /* The Lennard-Jones 9-3 wall, continued below z0/2 by its Taylor expansion there:
@@ -196,6 +216,39 @@ int main(void) {
   CHECK_OK(asp_system_set_potential(system, soft_wall_callback, &wall, 1));
   CHECK_ERROR(asp_solver_solve(pk, system, ASP_CONTROL_PENETRATION, penetration),
               ASP_ERR_UNSUPPORTED, "user potential with hard wall");
+
+  /* ---- a user's potential with the hard wall: lbfgsb on the gap solves it, and the
+   * exponential adhesion as a callback gives the built-in adhesion's solution ---- */
+  {
+    adhesion_data adhesion = {2e-5, 4e-3};
+    double callback_pressure = 0.0, builtin_pressure = 0.0, callback_gap = 0.0,
+           builtin_gap = 0.0;
+    CHECK_OK(asp_solver_set_option_string(lbfgsb, "variable", "gap"));
+    CHECK_OK(asp_solver_set_tolerance(lbfgsb, 1e-10));
+    CHECK_OK(asp_system_set_potential(system, adhesion_callback, &adhesion, 1));
+    CHECK_OK(asp_system_reset(system));
+    CHECK_OK(asp_solver_solve(lbfgsb, system, ASP_CONTROL_PENETRATION, penetration));
+    CHECK_OK(asp_solver_converged(lbfgsb, &converged));
+    CHECK(converged == 1);
+    CHECK_OK(asp_system_get(system, ASP_MEAN_PRESSURE, &callback_pressure));
+    CHECK_OK(asp_system_get(system, ASP_MEAN_GAP, &callback_gap));
+    CHECK_OK(asp_system_set_adhesion(system, adhesion.work, adhesion.range));
+    CHECK_OK(asp_system_reset(system));
+    CHECK_OK(asp_solver_solve(lbfgsb, system, ASP_CONTROL_PENETRATION, penetration));
+    CHECK_OK(asp_solver_converged(lbfgsb, &converged));
+    CHECK(converged == 1);
+    CHECK_OK(asp_system_get(system, ASP_MEAN_PRESSURE, &builtin_pressure));
+    CHECK_OK(asp_system_get(system, ASP_MEAN_GAP, &builtin_gap));
+    /* Adhesion pulls: the load at this penetration is below the plain hard wall's. */
+    CHECK(builtin_pressure < hard_wall_pressure);
+    /* Both solved to 1e-10 of the reference pressure. */
+    CHECK_NEAR(callback_pressure, builtin_pressure, 1e-7 * fabs(builtin_pressure));
+    CHECK_NEAR(callback_gap, builtin_gap, 1e-7 * fabs(builtin_gap));
+    /* bugnicourt on the gap does not take a user's potential. */
+    CHECK_OK(asp_system_set_potential(system, adhesion_callback, &adhesion, 1));
+    CHECK_ERROR(asp_solver_solve(primal, system, ASP_CONTROL_PENETRATION, penetration),
+                ASP_ERR_UNSUPPORTED, "user potential with hard wall");
+  }
 
   /* ---- the hard wall back: pk solves again, to the load it found before ---- */
   CHECK_OK(asp_system_set_hard_wall(system));
