@@ -409,8 +409,9 @@ ASP_EXPORT int asp_system_set_hard_wall(asp_system *system);
  * the potential acting on the open gap, as the exponential adhesion of
  * asp_system_set_adhesion does. As its scales are not known beforehand, a solve takes its
  * scales from the load and the heights only (set a reference pressure with
- * asp_system_set_reference_pressure for a surface without slope). Solvers that do not handle
- * a user potential refuse it before the solve with ASP_ERR_UNSUPPORTED.
+ * asp_system_set_reference_pressure for a surface without slope). Without the hard wall the
+ * unconstrained solvers take it; with it "lbfgsb" on the gap (penetration control). Solvers
+ * that do not handle a user potential refuse it before the solve with ASP_ERR_UNSUPPORTED.
  * fn NULL: ASP_ERR_NULL_POINTER naming 'fn', and nothing changes. */
 typedef int (*asp_potential_fn)(int64_t n, const double *gap, double *phi, double *dphi,
                                 double *d2phi, void *user_data);
@@ -500,7 +501,8 @@ typedef struct asp_solver asp_solver;
  *                 descent direction left.
  *   "lbfgsb"      Byrd, Lu, Nocedal & Zhu's L-BFGS-B (1995; hard wall, periodic or free
  *                 substrate) on the pressure (option "variable" = "pressure", the default;
- *                 no adhesion) or on the gap ("gap"; with or without adhesion), under
+ *                 no adhesion) or on the gap ("gap"; with or without adhesion, or a user's
+ *                 potential with the hard wall), under
  *                 ASP_CONTROL_PENETRATION only: it keeps the unknowns in bounds but cannot
  *                 impose a mean, so mean-pressure and mean-gap control are refused with
  *                 ASP_ERR_UNSUPPORTED. Option "memory" (integer in [1, 100], default 5): the
