@@ -93,6 +93,9 @@ module asperity
   integer(c_int), parameter, public :: ASP_TERMINATION_CONVERGED = 701, &
       ASP_TERMINATION_ITERATION_LIMIT = 702, ASP_TERMINATION_CANCELLED = 703, &
       ASP_TERMINATION_STALLED = 704, ASP_TERMINATION_BREAKDOWN = 705
+  ! Detrending modes
+  integer(c_int), parameter, public :: ASP_DETREND_MEAN = 801, ASP_DETREND_PLANE = 802, &
+      ASP_DETREND_CURVATURE = 803
 
   public :: asp_status_string, asp_last_error_message, asp_version_string, asp_abi_version
   public :: asp_grid_create_1d, asp_grid_create_2d, asp_grid_destroy, asp_grid_get_shape, &
@@ -100,7 +103,7 @@ module asperity
             asp_fft_import_wisdom
   public :: asp_topography_flat, asp_topography_sphere, asp_topography_paraboloid, &
             asp_topography_sinusoid, asp_topography_double_sinewave, &
-            asp_topography_self_affine, asp_topography_statistics, &
+            asp_topography_self_affine, asp_topography_statistics, asp_topography_detrend, &
             asp_topography_power_spectrum
   public :: asp_system_create, asp_system_create_free, asp_system_destroy, &
             asp_system_set_topography, &
@@ -278,6 +281,15 @@ module asperity
       real(c_double), intent(out) :: heights(*)
       integer(c_int64_t), value :: n
       integer(c_int) :: asp_topography_self_affine
+    end function
+    function asp_topography_detrend(grid, mode, heights, n) &
+        bind(c, name='asp_topography_detrend')
+      import :: c_int, c_int64_t, c_double, c_ptr
+      type(c_ptr), value :: grid
+      integer(c_int), value :: mode
+      real(c_double), intent(inout) :: heights(*)
+      integer(c_int64_t), value :: n
+      integer(c_int) :: asp_topography_detrend
     end function
     function asp_topography_statistics(grid, heights, n, rms_height, rms_slope, rms_curvature) &
         bind(c, name='asp_topography_statistics')

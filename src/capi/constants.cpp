@@ -55,6 +55,9 @@ const Constant constants[] = {
     ASP_CONSTANT(ASP_TERMINATION_CANCELLED, termination),
     ASP_CONSTANT(ASP_TERMINATION_STALLED, termination),
     ASP_CONSTANT(ASP_TERMINATION_BREAKDOWN, termination),
+    ASP_CONSTANT(ASP_DETREND_MEAN, detrend),
+    ASP_CONSTANT(ASP_DETREND_PLANE, detrend),
+    ASP_CONSTANT(ASP_DETREND_CURVATURE, detrend),
 };
 #undef ASP_CONSTANT
 
@@ -67,6 +70,7 @@ const char *family_name(Family family) {
     case Family::control: return "a control (ASP_CONTROL_*)";
     case Family::history_column: return "a history column (ASP_HISTORY_*)";
     case Family::termination: return "a termination reason (ASP_TERMINATION_*)";
+    case Family::detrend: return "a detrending mode (ASP_DETREND_*)";
   }
   return "unknown";
 }

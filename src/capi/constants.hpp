@@ -1,5 +1,5 @@
 // The families of public constants (planning, normalisations, scalar keys, fields, controls,
-// history columns, termination reasons) and the one check every entry point uses: a value is
+// history columns, termination reasons, detrending modes) and the one check every entry point uses: a value is
 // accepted only where its own family is expected, and a value of another family is named as
 // such in the message, never misread.
 #pragma once
@@ -15,6 +15,7 @@ enum class Family {
   control,
   history_column,
   termination,
+  detrend,
 };
 
 // Throws Error(invalid_argument) naming `argument`, the value, the family it belongs to (if

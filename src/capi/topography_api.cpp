@@ -3,6 +3,7 @@
 #include "capi/firewall.hpp"
 #include "capi/handles.hpp"
 #include "core/checks.hpp"
+#include "physics/detrend.hpp"
 #include "physics/surface_statistics.hpp"
 #include "physics/topography.hpp"
 
@@ -18,6 +19,17 @@ const asp::Grid &grid_for(const asp_grid *grid, const void *heights, int64_t n) 
 }  // namespace
 
 extern "C" {
+
+int asp_topography_detrend(const asp_grid *grid, int mode, double *heights, int64_t n) {
+  return guarded("asp_topography_detrend", [&] {
+    const asp::Grid &g = grid_for(grid, heights, n);
+    asp::capi::require_member(mode, asp::capi::Family::detrend, "mode");
+    const asp::Detrend detrend = mode == ASP_DETREND_MEAN    ? asp::Detrend::mean
+                                 : mode == ASP_DETREND_PLANE ? asp::Detrend::plane
+                                                             : asp::Detrend::curvature;
+    asp::detrend_topography(g, detrend, heights);
+  });
+}
 
 int asp_topography_flat(const asp_grid *grid, double *heights, int64_t n) {
   return guarded("asp_topography_flat",
