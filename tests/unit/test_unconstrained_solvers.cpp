@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/error.hpp"
@@ -162,6 +163,55 @@ TEST(UnconstrainedSolvers, LbfgsAndFireAgreeOnTheFreeHalfSpace) {
   EXPECT_GT(a.contact, 0.0);
   EXPECT_NEAR(a.mean_pressure, b.mean_pressure, 1e-8);
   EXPECT_LT(asp_test::max_abs_difference(a.gap, b.gap), 1e-7);
+}
+
+}  // namespace
+
+namespace {
+
+// The same soft-wall scene in other units, lengths times L and pressures times S (the
+// potential's energies per area times S L): the same dimensionless solution, since a solve
+// works in the scene's own units (to 1e-9: both solved to 1e-10 of the pressure scale).
+struct Dimensionless {
+  std::vector<double> gap, pressure;
+  double penetration;
+};
+
+Dimensionless solve_scaled(const char *algorithm, Control control, double length,
+                           double stress) {
+  auto grid = grid_1d(256, 64.0 * length);
+  System system(grid, 1.0 * stress);
+  std::vector<double> h(256);
+  sinusoid_topography(*grid, 1.0 * length, 1, 0, h.data());
+  system.set_topography(h.data());
+  system.set_soft_wall(0.1 * stress * length, 0.2 * length, 0.02 * stress * length,
+                       0.2 * length);
+  const double value = control == Control::penetration ? -0.2 * length : 0.005 * stress;
+  const SolveReport report = asp_test::solve_with(algorithm, system, control, value, 1e-10);
+  EXPECT_TRUE(report.converged()) << algorithm << " at L = " << length << ", S = " << stress;
+  Dimensionless d;
+  for (double g : system.state().gap) d.gap.push_back(g / length);
+  for (double p : system.state().pressure) d.pressure.push_back(p / stress);
+  d.penetration = system.state().penetration / length;
+  return d;
+}
+
+TEST(UnconstrainedSolvers, TheSameSceneInOtherUnitsGivesTheSameDimensionlessSolution) {
+  for (const char *algorithm : {"lbfgs_fourier", "fire"})
+    for (Control control : {Control::penetration, Control::mean_pressure}) {
+      const Dimensionless unit = solve_scaled(algorithm, control, 1.0, 1.0);
+      for (const auto &scale : {std::pair<double, double>{1e100, 1.0}, {1e-100, 1.0},
+                                {1.0, 1e100}, {1.0, 1e-100}, {1e50, 1e-80}}) {
+        const Dimensionless d = solve_scaled(algorithm, control, scale.first, scale.second);
+        EXPECT_LT(asp_test::max_abs_difference(d.gap, unit.gap), 1e-9)
+            << algorithm << " L = " << scale.first << ", S = " << scale.second;
+        EXPECT_LT(asp_test::max_abs_difference(d.pressure, unit.pressure),
+                  1e-9 * asp_test::max_abs(unit.pressure))
+            << algorithm << " L = " << scale.first << ", S = " << scale.second;
+        EXPECT_NEAR(d.penetration, unit.penetration, 1e-9)
+            << algorithm << " L = " << scale.first << ", S = " << scale.second;
+      }
+    }
 }
 
 }  // namespace
