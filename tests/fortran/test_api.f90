@@ -113,6 +113,8 @@ program test_api
   real(c_double), parameter :: box = 1, modulus = 1, radius = 1, mean_pressure = 1d-3
   real(c_double), parameter :: tolerance = 1d-10
   character(len=*), parameter :: wisdom_file = 'fortran_api.wisdom'
+  character(len=18), parameter :: unconstrained(5) = [character(len=18) :: 'lbfgs', &
+      'lbfgs_fourier', 'gfmd', 'fire', 'fire_mass_weighted']
 
   type(c_ptr) :: grid, system, solver, no_solver, adhesive_solver, free_system, line, no_system, &
                  lbfgsb, soft_solver
@@ -489,6 +491,26 @@ program test_api
   call expect(abs(value - scalar) <= 1d-8 * abs(scalar) .and. scalar > 0, &
               'the Fortran potential gives the built-in wall''s solution')
   call asp_solver_destroy(soft_solver)
+  ! Every unconstrained solver, by name, reaches the same mean gap on the built-in wall.
+  do k = 1, size(unconstrained)
+    call expect_status(asp_solver_create_f(trim(unconstrained(k)), soft_solver), ASP_OK, &
+                       'asp_solver_create_f(' // trim(unconstrained(k)) // ')')
+    call expect_status(asp_solver_set_tolerance(soft_solver, tolerance), ASP_OK, &
+                       'asp_solver_set_tolerance(' // trim(unconstrained(k)) // ')')
+    call expect_status(asp_solver_set_max_iterations(soft_solver, 200000_c_int64_t), ASP_OK, &
+                       'asp_solver_set_max_iterations(' // trim(unconstrained(k)) // ')')
+    call expect_status(asp_system_reset(system), ASP_OK, 'asp_system_reset')
+    call expect_status(asp_solver_solve(soft_solver, system, ASP_CONTROL_MEAN_PRESSURE, &
+                       mean_pressure), ASP_OK, trim(unconstrained(k)) // ' on the soft wall')
+    call expect_status(asp_solver_converged(soft_solver, converged), ASP_OK, &
+                       'asp_solver_converged(' // trim(unconstrained(k)) // ')')
+    call expect(converged == 1, trim(unconstrained(k)) // ' converges on the soft wall')
+    call expect_status(asp_system_get(system, ASP_MEAN_GAP, value), ASP_OK, &
+                       'asp_system_get(MEAN_GAP) after ' // trim(unconstrained(k)))
+    call expect(abs(value - scalar) <= 1d-7 * abs(scalar), &
+                trim(unconstrained(k)) // ' finds the mean gap of lbfgs_fourier')
+    call asp_solver_destroy(soft_solver)
+  end do
   call expect_status(asp_system_set_potential(system, c_funloc(soft_wall_potential), &
                      c_loc(wall), 0_c_int), ASP_OK, 'asp_system_set_potential again')
 
