@@ -416,8 +416,9 @@ ASP_EXPORT int asp_system_set_hard_wall(asp_system *system);
  * values are in the system's units (physical, as the grid, heights and E*: a solve's internal
  * scaling is undone around the call). It is called once per evaluation with all pixels, and
  * only from the thread that calls asp_solver_solve (or asp_system_get for
- * ASP_INTERACTION_ENERGY); it must not use the system or solver being solved. user_data is
- * passed through untouched.
+ * ASP_INTERACTION_ENERGY, and without the hard wall for ASP_CONTACT_FRACTION, which asks where
+ * phi' < 0); it must not use the system or solver being solved. user_data is passed through
+ * untouched.
  * A non-zero return, or a value written to phi, dphi or d2phi that is not finite, ends the
  * solve with ASP_ERR_CALLBACK, naming the returned value or the first bad index and its gap;
  * the system then goes back to the state the solve started from.
