@@ -8,6 +8,7 @@
 #include "core/checks.hpp"
 #include "core/error.hpp"
 #include "core/loops.hpp"
+#include "core/reductions.hpp"
 
 namespace asp {
 namespace {
@@ -83,39 +84,46 @@ void detrend_topography(const Grid &grid, Detrend mode, double *heights) {
 
   // The normal equations, summed over the pixels; heights relative to their largest
   // magnitude, so that the squares of heights near the largest double are never formed.
-  double largest = 0.0;
-  for (std::int64_t i = 0; i < n; ++i) largest = std::fmax(largest, std::fabs(heights[i]));
+  const Reductions &reductions = grid.reductions();
+  const double largest =
+      loops::maximum(reductions, n, [&](std::int64_t i) { return std::fabs(heights[i]); });
   if (largest == 0.0) return;
   const double per_height = 1.0 / largest;
+  // Sums: the k right-hand sides, then the k x k Gram matrix by rows.
+  std::vector<double> sums(static_cast<std::size_t>(k + k * k));
+  loops::block_sums(reductions, n, k + k * k, sums.data(),
+                    [&](std::int64_t begin, std::int64_t end, double *sum) {
+                      for (std::int64_t i = begin; i < end; ++i) {
+                        const Terms t = terms_at(i);
+                        const double h = heights[i] * per_height;
+                        for (int r = 0; r < k; ++r) {
+                          sum[r] += t[r] * h;
+                          for (int c = 0; c < k; ++c) sum[k + r * k + c] += t[r] * t[c];
+                        }
+                      }
+                    });
   std::array<Terms, largest_basis> gram{};
   Terms right{};
-  for (std::int64_t i = 0; i < n; ++i) {
-    const Terms t = terms_at(i);
-    const double h = heights[i] * per_height;
-    for (int r = 0; r < k; ++r) {
-      right[r] += t[r] * h;
-      for (int c = r; c < k; ++c) gram[r][c] += t[r] * t[c];
-    }
+  for (int r = 0; r < k; ++r) {
+    right[r] = sums[static_cast<std::size_t>(r)];
+    for (int c = 0; c < k; ++c) gram[r][c] = sums[static_cast<std::size_t>(k + r * k + c)];
   }
-  for (int r = 0; r < k; ++r)
-    for (int c = 0; c < r; ++c) gram[r][c] = gram[c][r];
   const Terms coefficients = solve_normal_equations(gram, right, k);
 
   // The detrended heights into a copy first, so that a refusal leaves the caller's intact.
   Field result(static_cast<std::size_t>(n));
   double *out = result.data();
-  bool finite = true;
-  for (std::int64_t i = 0; i < n; ++i) {
+  const double check = loops::sum(reductions, n, [&](std::int64_t i) {
     const Terms t = terms_at(i);
     double fit = 0.0;
     for (int r = 0; r < k; ++r) fit += coefficients[r] * t[r];
     out[i] = heights[i] - fit * largest;
-    finite = finite && std::isfinite(out[i]);
-  }
-  if (!finite)
+    return 0.0 * out[i];  // NaN if any result is not finite
+  });
+  if (check != 0.0)
     throw Error(Status::invalid_argument,
                 "argument 'heights': the detrended heights would exceed the largest double");
-  for (std::int64_t i = 0; i < n; ++i) heights[i] = out[i];
+  loops::for_each(n, [&](std::int64_t i) { heights[i] = out[i]; });
 }
 
 }  // namespace asp

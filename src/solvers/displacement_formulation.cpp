@@ -77,9 +77,9 @@ double DisplacementFormulation::largest_curvature(bool with_interaction) {
   // eigenvalue is its largest mode, and the potential adds at most its largest phi''.
   const double *k = substrate_.normalised_stiffness().data();
   const double factor = substrate_.transform_points() / substrate_.pixel_stiffness();
-  double largest_mode = 0.0;
-  for (std::size_t q = 0; q < spectrum_.size(); ++q)
-    largest_mode = std::max(largest_mode, factor * k[q]);
+  const double largest_mode =
+      loops::maximum(grid_.reductions(), static_cast<std::int64_t>(spectrum_.size()),
+                     [&](std::int64_t q) { return factor * k[q]; });
   if (!with_interaction) return largest_mode;
   interaction(displacement_.data(), true);
   return largest_mode + largest_interaction_curvature();

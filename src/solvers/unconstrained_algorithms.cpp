@@ -1,5 +1,7 @@
 #include "solvers/unconstrained_algorithms.hpp"
 
+#include <utility>
+
 #include "solvers/displacement_formulation.hpp"
 #include "solvers/fire.hpp"
 #include "solvers/fourier_formulation.hpp"
@@ -53,7 +55,38 @@ FireParameters fire_parameters(const OptionValues &o) {
   return p;
 }
 
-AlgorithmSpec soft_spec(const char *name, const char *summary, bool periodic_only) {
+// The runs, one per algorithm and variable: the formulation, the algorithm with its options,
+// the result written back.
+template <class Variable>
+void run_lbfgs(System &system, Control control, double value, const OptionValues &options,
+               Monitor &monitor) {
+  Variable formulation(system, control, value);
+  lbfgs(formulation, monitor, static_cast<int>(options.number("memory")));
+  conclude(formulation, system, monitor);
+}
+
+template <class Variable>
+void run_fire(System &system, Control control, double value, const OptionValues &options,
+              Monitor &monitor) {
+  Variable formulation(system, control, value);
+  fire(formulation, monitor, fire_parameters(options));
+  conclude(formulation, system, monitor);
+}
+
+void run_gfmd(System &system, Control control, double value, const OptionValues &options,
+              Monitor &monitor) {
+  FourierFormulation formulation(system, control, value);
+  GfmdParameters p;
+  p.time_step = options.number("time_step");
+  p.damping = options.number("damping");
+  gfmd(formulation, monitor, p);
+  conclude(formulation, system, monitor);
+}
+
+// What every unconstrained solver serves: the soft potentials under penetration and
+// mean-pressure control, on the periodic substrate and, where the variable allows, the free.
+AlgorithmSpec soft_spec(const char *name, const char *summary, bool periodic_only,
+                        std::vector<OptionSpec> options, decltype(AlgorithmSpec::run) run) {
   AlgorithmSpec spec;
   spec.name = name;
   spec.summary = summary;
@@ -62,109 +95,61 @@ AlgorithmSpec soft_spec(const char *name, const char *summary, bool periodic_onl
                         ? std::vector<SubstrateKind>{SubstrateKind::periodic}
                         : std::vector<SubstrateKind>{SubstrateKind::periodic, SubstrateKind::free};
   spec.interactions = soft_interactions;
+  spec.options = std::move(options);
+  spec.run = run;
   return spec;
-}
-
-template <class Variable, class Algorithm>
-void run_on(System &system, Control control, double value, Monitor &monitor,
-            Algorithm algorithm) {
-  Variable formulation(system, control, value);
-  algorithm(formulation, monitor);
-  conclude(formulation, system, monitor);
 }
 
 }  // namespace
 
 AlgorithmSpec lbfgs_algorithm() {
-  AlgorithmSpec spec = soft_spec(
+  return soft_spec(
       "lbfgs",
       "limited-memory BFGS (Nocedal 1980) with a strong Wolfe line search on the displacement: "
       "the unconstrained problem of a soft potential (thesis sections 2.2.1 and 3.1.6); "
       "mean-pressure control on a periodic half-space only",
-      false);
-  spec.options = {memory_option()};
-  spec.run = [](System &system, Control control, double value, const OptionValues &options,
-                Monitor &monitor) {
-    const int memory = static_cast<int>(options.number("memory"));
-    run_on<DisplacementFormulation>(system, control, value, monitor,
-                                    [&](Formulation &f, Monitor &m) { lbfgs(f, m, memory); });
-  };
-  return spec;
+      false, {memory_option()}, run_lbfgs<DisplacementFormulation>);
 }
 
 AlgorithmSpec lbfgs_fourier_algorithm() {
-  AlgorithmSpec spec = soft_spec(
+  return soft_spec(
       "lbfgs_fourier",
       "limited-memory BFGS on the displacement's spectrum scaled by sqrt(K~(q)), so that the "
       "elastic Hessian is the identity (the thesis's preconditioned L-BFGS, section 4.2), in "
       "1D and 2D",
-      true);
-  spec.options = {memory_option()};
-  spec.run = [](System &system, Control control, double value, const OptionValues &options,
-                Monitor &monitor) {
-    const int memory = static_cast<int>(options.number("memory"));
-    run_on<FourierFormulation>(system, control, value, monitor,
-                               [&](Formulation &f, Monitor &m) { lbfgs(f, m, memory); });
-  };
-  return spec;
+      true, {memory_option()}, run_lbfgs<FourierFormulation>);
 }
 
 AlgorithmSpec fire_algorithm() {
-  AlgorithmSpec spec = soft_spec(
+  return soft_spec(
       "fire",
       "the fast inertial relaxation engine (Bitzek et al. 2006, with FIRE 2.0's half step "
       "back) on the displacement, equal masses (thesis section 3.1.4)",
-      false);
-  spec.options = fire_options();
-  spec.run = [](System &system, Control control, double value, const OptionValues &options,
-                Monitor &monitor) {
-    const FireParameters p = fire_parameters(options);
-    run_on<DisplacementFormulation>(system, control, value, monitor,
-                                    [&](Formulation &f, Monitor &m) { fire(f, m, p); });
-  };
-  return spec;
+      false, fire_options(), run_fire<DisplacementFormulation>);
 }
 
 AlgorithmSpec fire_mass_weighted_algorithm() {
-  AlgorithmSpec spec = soft_spec(
+  return soft_spec(
       "fire_mass_weighted",
       "FIRE with masses proportional to K~(q) (Zhou, Moseler & Muser 2019; thesis section "
       "3.1.5): FIRE on the preconditioned Fourier variable",
-      true);
-  spec.options = fire_options();
-  spec.run = [](System &system, Control control, double value, const OptionValues &options,
-                Monitor &monitor) {
-    const FireParameters p = fire_parameters(options);
-    run_on<FourierFormulation>(system, control, value, monitor,
-                               [&](Formulation &f, Monitor &m) { fire(f, m, p); });
-  };
-  return spec;
+      true, fire_options(), run_fire<FourierFormulation>);
 }
 
 AlgorithmSpec gfmd_algorithm() {
-  AlgorithmSpec spec = soft_spec(
+  const GfmdParameters d;
+  return soft_spec(
       "gfmd",
       "damped Green's function molecular dynamics (Campana & Muser 2006; thesis Alg. 5), "
       "mass-weighted: Verlet steps with a damping force on the preconditioned Fourier variable",
-      true);
-  const GfmdParameters d;
-  spec.options = {
-      {"time_step", OptionType::real, d.time_step, 0.0, 1e300, false, {},
-       "the time step, in the variable's units (0: 1/sqrt of a bound on the largest curvature "
-       "at the start)"},
-      {"damping", OptionType::real, d.damping, 0.0, 1e300, false, {},
-       "eta, the damping per unit time (2 damps the elastic modes, of unit frequency, "
-       "critically)"},
-  };
-  spec.run = [](System &system, Control control, double value, const OptionValues &options,
-                Monitor &monitor) {
-    GfmdParameters p;
-    p.time_step = options.number("time_step");
-    p.damping = options.number("damping");
-    run_on<FourierFormulation>(system, control, value, monitor,
-                               [&](Formulation &f, Monitor &m) { gfmd(f, m, p); });
-  };
-  return spec;
+      true,
+      {{"time_step", OptionType::real, d.time_step, 0.0, 1e300, false, {},
+        "the time step, in the variable's units (0: 1/sqrt of a bound on the largest "
+        "curvature at the start)"},
+       {"damping", OptionType::real, d.damping, 0.0, 1e300, false, {},
+        "eta, the damping per unit time (2 damps the elastic modes, of unit frequency, "
+        "critically)"}},
+      run_gfmd);
 }
 
 }  // namespace asp
