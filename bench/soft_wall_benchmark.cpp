@@ -187,7 +187,6 @@ void table4(const Options &o, double range_factor) {
                                  : o.penetration;
   const double tolerance = o.tolerance > 0.0 ? o.tolerance : 1e-10;
   const double fft_pair = bench::fft_pair_seconds(*grid);
-  grid->half_complex_fft();  // planned before any solve is timed, as the r2c plans above
   const double work = 2.05 * 2.05 / (4.0 * 2.10e3) * rc;
   std::printf("thesis Table 4%s: %ld points, period %g, E* 1, H 0.8, short cutoff %g, rms "
               "slope %.3g, rms height %.4g, R_c %.4g; soft wall gamma_r %.4g, gamma_a %.4g, rho "
@@ -225,7 +224,6 @@ void rough(const Options &o) {
       std::isnan(o.penetration) ? 0.05 * system.height_range() : o.penetration;
   const double tolerance = o.tolerance > 0.0 ? o.tolerance : 1e-8;
   const double fft_pair = bench::fft_pair_seconds(*grid);
-  grid->half_complex_fft();  // planned before any solve is timed, as the r2c plans above
   std::printf("2D adhesive rough scene: %ld^2 pixels, period %g, E* 1, H 0.8, short cutoff 8, "
               "rms slope %.3g, R_c %.4g; soft wall gamma_r %.4g, gamma_a %.4g, rho %g; "
               "penetration %.6g; tolerance %.0e; FFT pair %.3f ms\n",
