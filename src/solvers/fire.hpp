@@ -34,7 +34,8 @@ void fire(Formulation &f, Monitor &monitor, const FireParameters &parameters);
 
 // The automatic first time step of a dynamics solver: 1/sqrt of an upper bound on the largest
 // curvature, half the stability limit 2/omega of the integrators for the stiffest mode.
-// Throws Error(unsupported) if the formulation bounds no curvature.
+// Throws Error(internal) if the formulation bounds no curvature (every formulation a dynamics
+// solver runs on does).
 double automatic_time_step(Formulation &f);
 
 }  // namespace asp
