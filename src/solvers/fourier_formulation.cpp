@@ -71,17 +71,19 @@ void FourierFormulation::displacement_of(const double *v, double *u) {
   counters_.transforms += 1;
 }
 
-void FourierFormulation::add_transformed(const double *v, const double *field,
-                                         double *gradient) {
+double FourierFormulation::add_transformed(const double *v, const double *field,
+                                           double *gradient) {
   // Since the backward transform is the forward one's adjoint times the weights, the
   // gradient of sum_i f(u_i) with respect to U_k is w_k R2C(f')_k / N (eqs. 69-73).
   substrate_.forward(field, spectrum_.data());
   counters_.transforms += 1;
   const Complex *F = spectrum_.data();
   const double *b = to_gradient_.data(), *elastic = elastic_.data();
-  loops::for_each(entries_, [&](std::int64_t k) {
-    gradient[2 * k] = elastic[k] * v[2 * k] + b[k] * F[k].real();
-    gradient[2 * k + 1] = elastic[k] * v[2 * k + 1] + b[k] * F[k].imag();
+  return 0.5 * loops::sum(grid_.reductions(), entries_, [&](std::int64_t k) {
+    const double re = elastic[k] * v[2 * k], im = elastic[k] * v[2 * k + 1];
+    gradient[2 * k] = re + b[k] * F[k].real();
+    gradient[2 * k + 1] = im + b[k] * F[k].imag();
+    return re * v[2 * k] + im * v[2 * k + 1];
   });
 }
 
@@ -91,12 +93,7 @@ double FourierFormulation::value_and_gradient(const double *v, double *gradient)
   displacement_of(v, u);
   counters_.evaluations += 1;
   const double outside = interaction(u);
-  add_transformed(v, dphi_.data(), gradient);
-  const double *elastic = elastic_.data();
-  const double energy = 0.5 * loops::sum(grid_.reductions(), entries_, [&](std::int64_t k) {
-    return elastic[k] * (v[2 * k] * v[2 * k] + v[2 * k + 1] * v[2 * k + 1]);
-  });
-  return energy + outside;
+  return add_transformed(v, dphi_.data(), gradient) + outside;
 }
 
 void FourierFormulation::hessian_product(const double *direction, double *product) {

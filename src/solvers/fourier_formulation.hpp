@@ -58,8 +58,9 @@ class FourierFormulation final : public SoftFormulation {
  private:
   // v's scaled spectrum U/N into spectrum_ (the backward transform's input for u).
   void spectrum_of(const double *v) const;
-  // gradient = elastic v + to_gradient R2C(field), entry by entry.
-  void add_transformed(const double *v, const double *field, double *gradient);
+  // gradient = elastic v + to_gradient R2C(field), entry by entry; returns the elastic
+  // energy (1/2) sum elastic |v|^2 from the same pass.
+  double add_transformed(const double *v, const double *field, double *gradient);
 
   std::int64_t entries_;  // of the half spectrum
   Field variable_;        // (Re v_k, Im v_k) for each entry k
