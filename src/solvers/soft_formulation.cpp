@@ -36,15 +36,12 @@ SoftFormulation::SoftFormulation(System &system, Control control, double value)
 double SoftFormulation::lower_bound() const { return -std::numeric_limits<double>::infinity(); }
 
 void SoftFormulation::starting_displacement(double *u) const {
-  // The state's gap is g = u - (h - max h) - delta in physical units; the objective's delta is
-  // the state's under penetration control (the displacement carries over) and 0 under
-  // mean-pressure control (the gap carries over).
-  const double *g = state_.gap.data();
-  const double per_length = 1.0 / length_unit_, top = max_height_;
-  const double delta = load_control() ? 0.0 : state_.penetration;
-  loops::for_each(n_, [&](std::int64_t i) {
-    u[i] = (g[i] + (heights_[i] - top) + delta) * per_length;
-  });
+  // The state's displacement (System::displacement); under mean-pressure control less the
+  // penetration, which the objective folds into it, so that the gap carries over.
+  system_.displacement(u);
+  const double per_length = 1.0 / length_unit_;
+  const double folded = load_control() ? state_.penetration : 0.0;
+  loops::for_each(n_, [&](std::int64_t i) { u[i] = (u[i] - folded) * per_length; });
 }
 
 double SoftFormulation::interaction(const double *u, bool curvature) {

@@ -27,22 +27,27 @@ std::shared_ptr<Grid> make_grid(const Shape &s) {
   return s.dimension == 1 ? grid_1d(s.nx, 1.0 * s.nx) : grid_2d(s.nx, s.ny, 1.0 * s.nx, 0.8 * s.ny);
 }
 
-// A rough surface with a soft wall whose range is a few pixels' elastic length, so that both
-// the elastic and the interaction parts of the objective matter.
-std::unique_ptr<System> soft_scene(const std::shared_ptr<Grid> &grid) {
-  auto system = std::make_unique<System>(grid, 1.0);
-  const std::vector<double> h = asp_test::rough_surface(*grid, 3, 0.1, 0.5, 2.0);
-  system->set_topography(h.data());
-  system->set_soft_wall(1.0, 0.2, 0.3, 0.2);
-  return system;
-}
-
 std::vector<double> random_vector(std::size_t n, std::uint64_t seed, double scale) {
   std::mt19937_64 engine(seed);
   std::normal_distribution<double> normal(0.0, scale);
   std::vector<double> v(n);
   for (double &x : v) x = normal(engine);
   return v;
+}
+
+// A rough surface with a soft wall whose range is a few pixels' elastic length, so that both
+// the elastic and the interaction parts of the objective matter, in a random state (gaps
+// drawn from the seed): the formulations start from the displacement it makes.
+std::unique_ptr<System> soft_scene(const std::shared_ptr<Grid> &grid, std::uint64_t seed) {
+  auto system = std::make_unique<System>(grid, 1.0);
+  const std::vector<double> h = asp_test::rough_surface(*grid, 3, 0.1, 0.5, 2.0);
+  system->set_topography(h.data());
+  system->set_soft_wall(1.0, 0.2, 0.3, 0.2);
+  const std::vector<double> g =
+      random_vector(static_cast<std::size_t>(grid->n_pixels()), seed, 0.5);
+  std::copy(g.begin(), g.end(), system->state().gap.data());
+  system->state().penetration = 0.1;
+  return system;
 }
 
 class SoftFormulations : public ::testing::TestWithParam<std::tuple<Shape, Control>> {};
@@ -52,13 +57,9 @@ class SoftFormulations : public ::testing::TestWithParam<std::tuple<Shape, Contr
 TEST_P(SoftFormulations, FourierAndDisplacementObjectivesAreTheSame) {
   const auto [shape, control] = GetParam();
   auto grid = make_grid(shape);
-  auto system = soft_scene(grid);
+  auto system = soft_scene(grid, 7);
   const double value = control == Control::penetration ? 0.3 : 0.02;
   const auto n = static_cast<std::size_t>(grid->n_pixels());
-  // A random state: the formulations start from the displacement it makes.
-  const std::vector<double> g = random_vector(n, 7, 0.5);
-  std::copy(g.begin(), g.end(), system->state().gap.data());
-  system->state().penetration = 0.1;
 
   DisplacementFormulation real(*system, control, value);
   FourierFormulation fourier(*system, control, value);
@@ -103,11 +104,8 @@ void check_gradient(F &f, std::uint64_t seed) {
 TEST_P(SoftFormulations, GradientsMatchFiniteDifferences) {
   const auto [shape, control] = GetParam();
   auto grid = make_grid(shape);
-  auto system = soft_scene(grid);
+  auto system = soft_scene(grid, 11);
   const double value = control == Control::penetration ? 0.3 : 0.02;
-  const auto n = static_cast<std::size_t>(grid->n_pixels());
-  const std::vector<double> g = random_vector(n, 11, 0.5);
-  std::copy(g.begin(), g.end(), system->state().gap.data());
   DisplacementFormulation real(*system, control, value);
   check_gradient(real, 1);
   FourierFormulation fourier(*system, control, value);
