@@ -115,7 +115,8 @@ module asperity
   public :: asp_solver_create, asp_solver_destroy, asp_solver_describe, asp_solver_set_option, &
             asp_solver_set_option_string, asp_solver_get_option, asp_solver_get_option_string, &
             asp_solver_set_tolerance, asp_solver_set_max_iterations, asp_solver_set_progress, &
-            asp_solver_set_history, asp_solver_solve, asp_solver_termination, &
+            asp_solver_set_history, asp_solver_solve, asp_solver_supports, &
+            asp_solver_termination, &
             asp_solver_iterations, asp_solver_evaluations, asp_solver_transforms, &
             asp_solver_final_error, asp_solver_converged, &
             asp_solver_elapsed_seconds, asp_solver_history_length, asp_solver_get_history
@@ -501,6 +502,12 @@ module asperity
       integer(c_int), value :: control
       real(c_double), value :: value
       integer(c_int) :: asp_solver_solve
+    end function
+    function asp_solver_supports(solver, system, control) bind(c, name='asp_solver_supports')
+      import :: c_int, c_ptr
+      type(c_ptr), value :: solver, system
+      integer(c_int), value :: control
+      integer(c_int) :: asp_solver_supports
     end function
     function asp_solver_termination(solver, reason) bind(c, name='asp_solver_termination')
       import :: c_int, c_ptr

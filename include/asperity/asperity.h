@@ -639,6 +639,14 @@ ASP_EXPORT int asp_solver_set_history(asp_solver *solver, int on);
 ASP_EXPORT int asp_solver_solve(asp_solver *solver, asp_system *system, int control,
                                 double value);
 
+/* Whether the solver, with its current options, serves the system under the control, asked
+ * without solving and without changing anything: ASP_OK if it does, ASP_ERR_UNSUPPORTED with
+ * the message asp_solver_solve would give if it does not (ASP_ERR_INVALID_ARGUMENT for an
+ * unknown control). Programs that offer every algorithm able to solve a scene ask this of
+ * each one (asp_algorithms lists them). */
+ASP_EXPORT int asp_solver_supports(const asp_solver *solver, const asp_system *system,
+                                   int control);
+
 /* The report of the last solve (ASP_ERR_INVALID_STATE before the first solve, or after a solve
  * that returned an error: the report then describes nothing). Iterations count the steps
  * taken; evaluations the objective or gradient evaluations and transforms the FFTs (one

@@ -148,6 +148,14 @@ int asp_solver_solve(asp_solver *solver, asp_system *system, int control, double
   });
 }
 
+int asp_solver_supports(const asp_solver *solver, const asp_system *system, int control) {
+  return guarded("asp_solver_supports", [&] {
+    asp::require_not_null(solver, "solver");
+    asp::require_not_null(system, "system");
+    solver->solver->check_supported(*system->system, control_of(control));
+  });
+}
+
 int asp_solver_termination(const asp_solver *solver, int *reason) {
   return guarded("asp_solver_termination", [&] {
     asp::require_not_null(reason, "reason");

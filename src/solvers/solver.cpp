@@ -90,7 +90,7 @@ void Solver::forget_last_solve() {
 
 void Solver::solve(System &system, Control control, double value) {
   forget_last_solve();
-  check_request(algorithm_, options_, system, control);
+  check_supported(system, control);
   require_finite(value, "value");
   if (control == Control::mean_pressure && value < 0.0 &&
       system.interaction().kind() == InteractionKind::hard_wall)

@@ -32,6 +32,12 @@ class Solver {
 
   const AlgorithmSpec &algorithm() const { return algorithm_; }
 
+  // Throws Error(unsupported), as solve() would, if this algorithm with these options cannot
+  // serve the system under the control; changes nothing.
+  void check_supported(const System &system, Control control) const {
+    check_request(algorithm_, options_, system, control);
+  }
+
   // Options by name; unknown names, wrong types and values out of range are refused with
   // Error(invalid_argument) naming the option and what is valid.
   void set_option(const std::string &name, double value);

@@ -148,6 +148,9 @@ int main(void) {
       if (!handles_hard_wall(name)) {
         asp_solver *solver = NULL;
         CHECK_OK(asp_solver_create(name, &solver));
+        /* asp_solver_supports answers as the solve does, without solving. */
+        CHECK_ERROR(asp_solver_supports(solver, system, control), ASP_ERR_UNSUPPORTED,
+                    "hard wall");
         CHECK_ERROR(asp_solver_solve(solver, system, control, 0.01), ASP_ERR_UNSUPPORTED,
                     "hard wall");
         asp_solver_destroy(solver);
@@ -156,11 +159,22 @@ int main(void) {
       if (control == ASP_CONTROL_MEAN_PRESSURE && !offers_load_control(name)) {
         asp_solver *solver = NULL;
         CHECK_OK(asp_solver_create(name, &solver));
+        CHECK_ERROR(asp_solver_supports(solver, system, control), ASP_ERR_UNSUPPORTED,
+                    "mean_pressure");
         CHECK_ERROR(asp_solver_solve(solver, system, control, 0.01), ASP_ERR_UNSUPPORTED,
                     "mean_pressure");
         asp_solver_destroy(solver);
         check_monitor(name, system, ASP_CONTROL_PENETRATION, penetration);
         continue;
+      }
+      {
+        asp_solver *solver = NULL;
+        CHECK_OK(asp_solver_create(name, &solver));
+        CHECK_OK(asp_solver_supports(solver, system, control));
+        CHECK_ERROR(asp_solver_supports(solver, system, 0), ASP_ERR_INVALID_ARGUMENT, "control");
+        CHECK_ERROR(asp_solver_supports(NULL, system, control), ASP_ERR_NULL_POINTER, "solver");
+        CHECK_ERROR(asp_solver_supports(solver, NULL, control), ASP_ERR_NULL_POINTER, "system");
+        asp_solver_destroy(solver);
       }
       solve(name, system, control,
             control == ASP_CONTROL_MEAN_PRESSURE ? 0.01 : penetration, p, g, &contact);
