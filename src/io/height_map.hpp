@@ -7,8 +7,9 @@
 // matrices in one of two layouts, and each reader says which one it found:
 //   - one scan line per row (rows are y, columns are x): text matrices as Gwyddion, MATLAB
 //     and NumPy's savetxt write them, C-order .npy arrays of shape (ny, nx), images;
-//   - x fastest in memory: .x3p point data, Fortran-order .npy arrays of shape (ny, nx) read
-//     as the same [row = y, column = x] indices.
+//   - x fastest in memory: .x3p point data.
+// Fortran-order .npy arrays of shape (ny, nx) (y fastest in memory) are read with the same
+// [row = y, column = x] indices as C-order ones.
 // A one-dimensional profile (one line of text, a .npy of shape (n,), an x3p profile) has ny = 1.
 #pragma once
 

@@ -65,8 +65,8 @@ class HeaderParser {
   }
 
  private:
-  const std::string &path_;
-  const std::string &text_;
+  std::string path_;
+  std::string text_;
   size_t pos_ = 0;
 
   [[noreturn]] void fail(const std::string &what) const {
@@ -174,6 +174,8 @@ HeightMap read_npy(const std::string &path, const std::string &bytes) {
 
   // The dtype: a byte order ('<', '>', '|' or '=') then a kind and a size.
   const std::string &d = header.descr;
+  if (d.size() >= 2 && d[1] == 'O')
+    throw FileError(path + ": object arrays ('" + d + "') are not read: only numbers are");
   if (d.size() < 3 || std::string("<>|=").find(d[0]) == std::string::npos)
     throw FileError(path + ": unsupported dtype '" + d + "'");
   const bool big_endian = d[0] == '>';
@@ -182,8 +184,6 @@ HeightMap read_npy(const std::string &path, const std::string &bytes) {
   int size = 0;
   if (size_text == "1" || size_text == "2" || size_text == "4" || size_text == "8")
     size = size_text[0] - '0';
-  if (kind == 'O')
-    throw FileError(path + ": object arrays ('" + d + "') are not read: only numbers are");
   const bool supported = (kind == 'f' && (size == 4 || size == 8)) ||
                          ((kind == 'i' || kind == 'u') && size > 0);
   if (!supported)
