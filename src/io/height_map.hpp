@@ -7,8 +7,9 @@
 // matrices in one of two layouts, and each reader says which one it found:
 //   - one scan line per row (rows are y, columns are x): text matrices as Gwyddion, MATLAB
 //     and NumPy's savetxt write them, C-order .npy arrays of shape (ny, nx), images;
-//   - x fastest in memory: .x3p point data, Fortran-order .npy arrays of shape (ny, nx) read
-//     as the same [row = y, column = x] indices.
+//   - x fastest in memory: .x3p point data.
+// Fortran-order .npy arrays of shape (ny, nx) (y fastest in memory) are read with the same
+// [row = y, column = x] indices as C-order ones.
 // A one-dimensional profile (one line of text, a .npy of shape (n,), an x3p profile) has ny = 1.
 #pragma once
 
@@ -63,9 +64,13 @@ double unit_in_metres(const std::string &unit);
 // Missing points (NaN heights): refused, or filled by the documented rule of fill_missing.
 // fill_missing replaces each NaN by harmonic interpolation: the solution of Laplace's equation
 // on the missing points with the known heights as boundary values (4-neighbour stencil, the
-// grid's edges not wrapped), so a hole is bridged smoothly. Returns how many were filled.
-// Throws FileError when every point is missing. describe_missing says how many points are
-// missing and where the first one is ("3 missing points (NaN), the first at x = 4, y = 0").
+// grid's edges not wrapped), so a hole is bridged smoothly: each filled height is the mean of
+// its neighbours inside the grid (4 inside, 3 on an edge, 2 at a corner), so a plane is filled
+// exactly in an interior hole. Solved by preconditioned conjugate gradients to rounding
+// accuracy. Returns how many were filled and sets map.missing to 0. Throws FileError when every
+// point is missing. describe_missing says how many points are missing and where the first one
+// (x fastest) is: "3 missing points (NaN), the first at x = 4, y = 0", "1 missing point (NaN),
+// at x = 4, y = 0", or "no missing points".
 int64_t fill_missing(HeightMap &map);
 std::string describe_missing(const HeightMap &map);
 
