@@ -1,0 +1,46 @@
+// Reading a command's arguments: options with a value after '=' or as the next argument, and
+// positional arguments. Refusals name the argument and end with a pointer to --help.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "scene.hpp"
+
+namespace cli {
+
+class Arguments {
+ public:
+  // command: "asperity run", for messages.
+  Arguments(std::vector<std::string> arguments, std::string command);
+
+  // Moves to the next argument; false when there is none.
+  bool next();
+  const std::string &current() const { return arguments_[index_]; }
+  // The current argument is this option (--name, or --name=VALUE for options with a value).
+  bool is(const char *name);
+  bool is_flag(const char *name);  // an option without a value (refuses --name=VALUE)
+  // The value of the option matched by is(): after '=' or the next argument.
+  std::string value();
+  bool positional() const;  // does not start with '-' (or is "-")
+  [[noreturn]] void refuse(const std::string &problem) const;
+
+  // The scene overrides shared by run, compare and sweep: --set KEY=VALUE, --algorithm NAME,
+  // --tolerance T, --option NAME=VALUE, --output DIR, --no-plots. True if the current
+  // argument was one of them (and adds its override).
+  bool scene_option(std::vector<Override> &overrides);
+
+ private:
+  std::vector<std::string> arguments_;
+  std::string command_;
+  size_t index_ = 0;
+  bool started_ = false;
+  std::string matched_;  // the option name is() matched
+  std::string inline_value_;
+  bool has_inline_value_ = false;
+};
+
+// The help text of the scene overrides, for each command's --help.
+extern const char *const scene_options_help;
+
+}  // namespace cli

@@ -1,0 +1,247 @@
+// asperity compare [SCENE]: several solvers on one scene, each from rest to the same
+// tolerance, with error against wall time and against iteration for each, so that a user can
+// see which solver is fastest on their own scene.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <set>
+#include <sstream>
+
+#include "arguments.hpp"
+#include "commands.hpp"
+#include "outputs.hpp"
+#include "report.hpp"
+#include "solve.hpp"
+
+namespace cli {
+namespace {
+
+const char *const compare_help =
+    "usage: asperity compare [SCENE] [OPTION]...\n"
+    "\n"
+    "Solves the scene (without SCENE, the built-in scene) with several solvers, each\n"
+    "from rest to the same tolerance (solver.tolerance), and shows for each how the\n"
+    "solve ended, its iterations, time, FFTs, results, and how far its pressure field\n"
+    "lies from that of the first solver that converged. By default every algorithm that\n"
+    "serves the scene (its substrate, interaction and control) runs; the others are\n"
+    "listed as skipped, with the reason. The error of each solver is its own measure of\n"
+    "the force balance (docs/algorithms.md): all are pressures relative to the same\n"
+    "reference pressure, so their tolerances mean the same. Writes to the output\n"
+    "directory:\n"
+    "  compare.csv           one row per iteration of each solver: algorithm, iteration,\n"
+    "                        evaluations, transforms, seconds, error, objective,\n"
+    "                        contact_fraction\n"
+    "  compare_summary.csv   one row per solver\n"
+    "  error_vs_time.png     error against wall-clock time, one line per solver\n"
+    "  error_vs_iteration.png  error against iteration (when gnuplot is installed)\n"
+    "\n"
+    "Solvers:\n"
+    "  --solvers A,B,...  these algorithms, in this order (compare.solvers); each must\n"
+    "                     serve the scene\n"
+    "Options of one algorithm come from [compare.options.NAME] tables of the scene;\n"
+    "the scene's [solver.options] apply to solver.algorithm; tolerance, max_iterations\n"
+    "and stall_window of [solver] to every solver.\n"
+    "\n";
+
+std::vector<std::string> split_names(const std::string &text, char separator) {
+  std::vector<std::string> names;
+  std::istringstream in(text);
+  std::string name;
+  while (std::getline(in, name, separator))
+    if (!name.empty()) names.push_back(name);
+  return names;
+}
+
+struct Entry {
+  std::string algorithm;
+  Solver solver;
+};
+
+// The largest difference between two pressure fields relative to the largest |pressure| of
+// the reference.
+double relative_difference(const std::vector<double> &p, const std::vector<double> &reference) {
+  double difference = 0.0, scale = 0.0;
+  for (size_t i = 0; i < p.size(); ++i) {
+    difference = std::max(difference, std::fabs(p[i] - reference[i]));
+    scale = std::max(scale, std::fabs(reference[i]));
+  }
+  return scale > 0.0 ? difference / scale : difference;
+}
+
+}  // namespace
+
+int compare_command(const std::vector<std::string> &arguments) {
+  Arguments args(arguments, "asperity compare");
+  std::vector<Override> overrides;
+  std::string scene_path;
+  while (args.next()) {
+    if (args.is_flag("--help") || args.is_flag("-h")) {
+      std::printf("%s%s\n%s", compare_help, scene_options_help, exit_status_help);
+      return exit_converged;
+    }
+    if (args.scene_option(overrides)) continue;
+    if (args.is("--solvers")) {
+      const std::string v = args.value();
+      std::string array = "[";
+      for (const std::string &name : split_names(v, ','))
+        array += (array.size() > 1 ? ", \"" : "\"") + name + "\"";
+      overrides.push_back({"compare.solvers=" + array + "]", "--solvers " + v});
+      continue;
+    }
+    if (args.positional() && scene_path.empty()) {
+      scene_path = args.current();
+      continue;
+    }
+    args.refuse(args.positional() ? "a second scene: compare takes one" : "unknown option");
+  }
+
+  Session session = open_session(scene_path, overrides, false);
+  const Scene &scene = session.scene;
+  Contact &contact = session.contact;
+  const int control = scene.control.control;
+  if (scene.control.has_sweep)
+    throw usage_error(scene.source + ": control: compare solves one value; this scene sweeps");
+
+  // The solvers: made, configured and checked against the scene before any solve.
+  const bool chosen = !scene.compare.solvers.empty();
+  const std::vector<std::string> names =
+      chosen ? scene.compare.solvers : split_names(algorithm_names(), '\n');
+  std::vector<OptionSetting> common;
+  for (const OptionSetting &o : scene.solver.options)
+    if (o.name == "tolerance" || o.name == "max_iterations" || o.name == "stall_window")
+      common.push_back(o);
+  std::vector<Entry> entries;
+  std::vector<std::string> skipped;
+  std::set<std::string> seen;
+  for (const std::string &name : names) {
+    if (!seen.insert(name).second)
+      throw usage_error(scene.source + ": compare.solvers: \"" + name + "\" is listed twice");
+    std::vector<OptionSetting> settings =
+        name == scene.solver.algorithm ? scene.solver.options : common;
+    const auto own = scene.compare.options.find(name);
+    if (own != scene.compare.options.end())
+      settings.insert(settings.end(), own->second.begin(), own->second.end());
+    const std::string where = scene.source + ": compare.solvers: " + name;
+    Solver solver = make_solver(name, where, settings);
+    const std::string refused = refusal(solver.get(), contact, control);
+    if (!refused.empty()) {
+      if (chosen) throw usage_error(where + ": " + refused);
+      skipped.push_back(name + ": " + refused);
+      continue;
+    }
+    entries.push_back({name, std::move(solver)});
+  }
+  for (const auto &[name, options] : scene.compare.options)
+    if (!seen.count(name))
+      throw usage_error(scene.source + ": compare.options." + name +
+                        ": options for an algorithm that is not compared");
+  if (entries.empty())
+    throw usage_error(scene.source + ": no algorithm serves this scene:\n  " +
+                      [&] {
+                        std::string text;
+                        for (const std::string &s : skipped) text += s + "\n  ";
+                        return text;
+                      }());
+
+  make_directory(session);
+  print_scene(stdout, scene, contact);
+  std::printf("control           %s %g (%s)\n", control_name(control), scene.control.value,
+              control_unit(control, contact.surface).c_str());
+  for (const std::string &s : skipped) std::printf("skipped           %s\n", s.c_str());
+  std::printf("\n%-20s %-16s %10s %10s %10s %11s %14s %14s %9s %10s\n", "algorithm",
+              "termination", "iterations", "time [s]", "error", "transforms", "mean pressure",
+              "penetration", "contact", "vs first");
+  std::fflush(stdout);
+
+  InterruptGuard interrupts;
+  ProgressLine progress(stderr);
+  std::vector<SolveReport> reports;
+  std::vector<double> reference;
+  std::string reference_name;
+  for (Entry &e : entries) {
+    if (InterruptGuard::interrupted()) break;
+    check(asp_system_reset(contact.system.get()), "resetting the system");
+    progress.set_label(e.algorithm);
+    SolveReport r = solve(e.solver.get(), e.algorithm, contact, control, scene.control.value,
+                          progress, true, scene.source + ": compare.solvers: " + e.algorithm);
+    const std::vector<double> pressure = read_field(contact, ASP_FIELD_PRESSURE);
+    std::string versus = "-";
+    if (!reference.empty()) {
+      char text[32];
+      std::snprintf(text, sizeof text, "%.2e", relative_difference(pressure, reference));
+      versus = text;
+    } else if (r.converged()) {
+      reference = pressure;
+      reference_name = e.algorithm;
+      versus = "reference";
+    }
+    std::printf("%-20s %-16s %10lld %10.3f %10.2e %11lld %14.6g %14.6g %9.5f %10s\n",
+                e.algorithm.c_str(), termination_name(r.termination),
+                static_cast<long long>(r.iterations), r.seconds, r.error,
+                static_cast<long long>(r.transforms), r.mean_pressure, r.penetration,
+                r.contact_fraction, versus.c_str());
+    std::fflush(stdout);
+    reports.push_back(std::move(r));
+  }
+
+  // The files.
+  const Surface &s = contact.surface;
+  std::vector<std::string> header = {"algorithm"};
+  for (const HistoryColumn &c : history_columns)
+    header.push_back(column(c.name, std::string(c.name) == "seconds" ? "s" : ""));
+  CsvTable histories(header);
+  CsvTable summary({"algorithm", "termination", "iterations", "evaluations", "transforms",
+                    column("seconds", "s"), "error", "tolerance", "contact_fraction",
+                    column("mean_pressure", pressure_unit), column("penetration", s.unit),
+                    column("mean_gap", s.unit)});
+  LinePlot by_time, by_iteration;
+  by_time.title = "error against time (" + scene.source + ")";
+  by_time.x_label = "wall-clock time [s]";
+  by_iteration.title = "error against iteration (" + scene.source + ")";
+  by_iteration.x_label = "iteration";
+  by_time.y_label = by_iteration.y_label = "error";
+  by_time.log_y = by_iteration.log_y = true;
+  const SolveReport *fastest = nullptr;
+  for (const SolveReport &r : reports) {
+    for (size_t i = 0; i < r.history[0].size(); ++i) {
+      std::vector<std::string> row = {r.algorithm};
+      for (size_t c = 0; c < r.history.size(); ++c)
+        row.push_back(c <= 2 ? cell(static_cast<int64_t>(r.history[c][i])) : cell(r.history[c][i]));
+      histories.add_row(std::move(row));
+    }
+    summary.add_row({r.algorithm, termination_name(r.termination), cell(r.iterations),
+                     cell(r.evaluations), cell(r.transforms), cell(r.seconds), cell(r.error),
+                     cell(r.tolerance), cell(r.contact_fraction), cell(r.mean_pressure),
+                     cell(r.penetration), cell(r.mean_gap)});
+    if (!r.history[4].empty())
+      by_time.y_max = by_iteration.y_max = std::max(by_time.y_max, 100.0 * r.history[4][0]);
+    by_time.series.push_back({r.algorithm, r.history[3], r.history[4]});
+    by_iteration.series.push_back({r.algorithm, r.history[0], r.history[4]});
+    if (r.converged() && (fastest == nullptr || r.seconds < fastest->seconds)) fastest = &r;
+  }
+  const std::string &dir = session.directory;
+  histories.write(dir + "/compare.csv");
+  summary.write(dir + "/compare_summary.csv");
+  std::string files = "compare.csv, compare_summary.csv";
+  if (scene.output.plots) {
+    for (const auto &[plot, name] : {std::pair<const LinePlot *, const char *>{&by_time, "error_vs_time"},
+                                     {&by_iteration, "error_vs_iteration"}}) {
+      const std::string note = session.plotter.lines(dir + "/" + name + ".png", *plot);
+      if (note.empty()) files += std::string(", ") + name + ".png";
+      else std::fprintf(stderr, "asperity: note: %s\n", note.c_str());
+    }
+  }
+  std::printf("\n");
+  if (fastest != nullptr)
+    std::printf("fastest           %s: converged in %.3f s\n", fastest->algorithm.c_str(),
+                fastest->seconds);
+  if (!reference_name.empty())
+    std::printf("vs first          largest pressure difference from %s's, relative to its "
+                "largest pressure\n", reference_name.c_str());
+  std::printf("outputs           %s/: %s\n", dir.c_str(), files.c_str());
+  bool all = reports.size() == entries.size();
+  for (const SolveReport &r : reports) all = all && r.converged();
+  return all ? exit_converged : exit_not_converged;
+}
+
+}  // namespace cli

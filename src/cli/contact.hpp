@@ -1,0 +1,51 @@
+// The library objects a scene describes: the surface's heights on their grid, the grid, the
+// system (substrate, topography, interaction) and configured solvers. Everything a scene asks
+// for is built and checked here, before any solve, so that a scene the library refuses is
+// reported as a bad scene (exit status 2) and nothing runs half-configured.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "library.hpp"
+#include "scene.hpp"
+
+namespace cli {
+
+// The heights of a scene on their grid, in the scene's length unit.
+struct Surface {
+  int64_t nx = 0;
+  int64_t ny = 0;  // 1 for a one-dimensional grid
+  bool one_dimensional = false;
+  double lx = 0.0;
+  double ly = 0.0;  // lx for a one-dimensional grid
+  std::string unit;  // "" when the scene is dimensionless
+  std::vector<double> heights;  // x fastest
+  std::string description;      // one line: what the surface is and where it came from
+  std::vector<std::string> notes;  // what was assumed or changed on the way (units, filling)
+};
+
+// The scene's grid, as the library makes it.
+Grid make_grid(const Surface &surface);
+
+// The surface a scene describes: generated or read from its file, converted to the scene's
+// unit, missing points filled if the scene says so, detrended if it says so.
+Surface make_surface(const Scene &scene);
+
+struct Contact {
+  Surface surface;
+  Grid grid;
+  System system;
+  bool periodic = true;
+};
+
+// The grid and the system (substrate, topography, interaction) of a scene.
+Contact make_contact(const Scene &scene);
+
+// A solver of that algorithm with the settings applied in order. `where` names the place in
+// the scene the algorithm came from, for messages.
+Solver make_solver(const std::string &algorithm, const std::string &where,
+                   const std::vector<OptionSetting> &settings);
+
+
+}  // namespace cli

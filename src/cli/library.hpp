@@ -1,0 +1,45 @@
+// The library's handles owned by C++ objects, and its status codes turned into CommandError.
+// The command uses only the public C interface, like any other program linked to asperity.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "asperity/asperity.h"
+#include "exit_status.hpp"
+
+namespace cli {
+
+struct GridDeleter {
+  void operator()(asp_grid *grid) const { asp_grid_destroy(grid); }
+};
+struct SystemDeleter {
+  void operator()(asp_system *system) const { asp_system_destroy(system); }
+};
+struct SolverDeleter {
+  void operator()(asp_solver *solver) const { asp_solver_destroy(solver); }
+};
+using Grid = std::unique_ptr<asp_grid, GridDeleter>;
+using System = std::unique_ptr<asp_system, SystemDeleter>;
+using Solver = std::unique_ptr<asp_solver, SolverDeleter>;
+
+// The library's message for the last failed call, prefixed by what was being done.
+std::string library_message(int status, const std::string &what);
+
+// Throws failure(...) unless status is ASP_OK: the library or the system failed.
+void check(int status, const std::string &what);
+
+// Throws usage_error(where + ": " + message) when the library refused a value the user gave
+// (ASP_ERR_INVALID_ARGUMENT, ASP_ERR_UNSUPPORTED, ASP_ERR_SIZE_MISMATCH), failure otherwise.
+void check_given(int status, const std::string &where);
+
+// Reads one observable (ASP_MEAN_PRESSURE, ...) of the system.
+double observable(const asp_system *system, int key);
+
+// "converged", "iteration limit", ... for an ASP_TERMINATION_* reason.
+const char *termination_name(int reason);
+
+// The text of asp_algorithms: one name per line.
+std::string algorithm_names();
+
+}  // namespace cli

@@ -1,0 +1,48 @@
+// The files the commands write: CSV tables (a header line whose column names carry their
+// units), fields as .npy, and the directory they go to.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "contact.hpp"
+#include "scene.hpp"
+
+namespace cli {
+
+// The output directory, created (with its parents) before any work, so that a directory
+// that cannot be made is a bad argument found before the solve. Throws usage_error.
+std::string prepare_directory(const std::string &directory, const std::string &where);
+
+// A CSV table: the header's names, then rows of cells (numbers written with %.17g).
+class CsvTable {
+ public:
+  explicit CsvTable(std::vector<std::string> header) : header_(std::move(header)) {}
+  void add_row(std::vector<std::string> cells) { rows_.push_back(std::move(cells)); }
+  void write(const std::string &path) const;  // throws failure naming the file
+
+ private:
+  std::vector<std::string> header_;
+  std::vector<std::vector<std::string>> rows_;
+};
+
+std::string cell(double value);
+std::string cell(int64_t value);
+
+// "name [unit]", or "name" when the unit is "".
+std::string column(const std::string &name, const std::string &unit);
+
+// The unit of pressures: that of E* (the scene does not fix one).
+extern const char *const pressure_unit;
+
+// Reads one field of the system (ASP_FIELD_*).
+std::vector<double> read_field(const Contact &contact, int field);
+
+// Writes the fields the scene asks for as DIRECTORY/NAME.npy; returns the paths written.
+std::vector<std::string> write_fields(const Contact &contact, const std::vector<std::string> &names,
+                                      const std::string &directory);
+
+// The pixels in repulsive contact (pressure > 0) as 1, the others as 0.
+std::vector<double> contact_map(const std::vector<double> &pressure);
+
+}  // namespace cli

@@ -1,0 +1,160 @@
+#include "plots.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <unistd.h>
+
+namespace cli {
+namespace {
+
+// The program on PATH, or "".
+std::string find_on_path(const std::string &name) {
+  const char *path = std::getenv("PATH");
+  std::istringstream directories(path != nullptr ? path : "/usr/bin:/bin");
+  std::string directory;
+  while (std::getline(directories, directory, ':')) {
+    const std::string candidate = (directory.empty() ? "." : directory) + "/" + name;
+    if (access(candidate.c_str(), X_OK) == 0) return candidate;
+  }
+  return "";
+}
+
+// A single-quoted shell word.
+std::string quoted(const std::string &text) {
+  std::string word = "'";
+  for (char c : text) word += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return word + "'";
+}
+
+// A gnuplot string literal (single quotes; a quote is doubled).
+std::string literal(const std::string &text) {
+  std::string word = "'";
+  for (char c : text) word += c == '\'' ? std::string("''") : std::string(1, c);
+  return word + "'";
+}
+
+}  // namespace
+
+Plotter::Plotter() {
+  const char *chosen = std::getenv("ASPERITY_GNUPLOT");
+  if (chosen != nullptr) {
+    if (*chosen == '\0') {
+      missing_ = "pictures turned off (ASPERITY_GNUPLOT is empty)";
+    } else if (access(chosen, X_OK) == 0) {
+      program_ = chosen;
+    } else {
+      missing_ = std::string("ASPERITY_GNUPLOT names no program: ") + chosen;
+    }
+    return;
+  }
+  program_ = find_on_path("gnuplot");
+  if (program_.empty())
+    missing_ = "gnuplot is not installed (Debian: apt-get install gnuplot-nox)";
+}
+
+std::string Plotter::run(const std::string &png, const std::string &script) const {
+  if (program_.empty()) return "skipped " + png + ": " + missing_;
+  const std::string script_path = png + ".gnuplot";
+  const std::string errors_path = png + ".errors";
+  {
+    std::ofstream file(script_path);
+    file << "set terminal pngcairo size 900,700 noenhanced\n"
+         << "set output " << literal(png) << "\n"
+         << script;
+    if (!file) return "skipped " + png + ": cannot write " + script_path;
+  }
+  const std::string command =
+      quoted(program_) + " " + quoted(script_path) + " 2> " + quoted(errors_path);
+  const int status = std::system(command.c_str());
+  std::string note;
+  if (status != 0) {
+    std::ifstream errors(errors_path);
+    std::string first;
+    std::getline(errors, first);
+    note = "skipped " + png + ": gnuplot failed" + (first.empty() ? "" : ": " + first);
+    std::error_code ignored;
+    std::filesystem::remove(png, ignored);
+  }
+  std::error_code ignored;
+  std::filesystem::remove(script_path, ignored);
+  std::filesystem::remove(errors_path, ignored);
+  return note;
+}
+
+std::string Plotter::lines(const std::string &png, const LinePlot &plot) const {
+  if (program_.empty()) return "skipped " + png + ": " + missing_;
+  std::ostringstream script;
+  script.precision(17);
+  script << "set title " << literal(plot.title) << "\n"
+         << "set xlabel " << literal(plot.x_label) << "\n"
+         << "set ylabel " << literal(plot.y_label) << "\n"
+         << "set grid\nset key outside right top\n";
+  if (plot.log_x) script << "set logscale x\nset format x '10^{%L}'\n";
+  if (plot.log_y) script << "set logscale y\nset format y '%.0e'\n";
+  if (plot.y_max > 0.0) script << "set yrange [:" << plot.y_max << "]\n";
+  // Inline data blocks keep the picture to one file and one run.
+  for (size_t k = 0; k < plot.series.size(); ++k) {
+    script << "$data" << k << " << EOD\n";
+    const Series &s = plot.series[k];
+    for (size_t i = 0; i < s.x.size() && i < s.y.size(); ++i)
+      if (!(plot.log_y && s.y[i] <= 0.0) && !(plot.log_x && s.x[i] <= 0.0))
+        script << s.x[i] << " " << s.y[i] << "\n";
+    script << "EOD\n";
+  }
+  script << "plot ";
+  for (size_t k = 0; k < plot.series.size(); ++k)
+    script << (k ? ", " : "") << "$data" << k << " using 1:2 with "
+           << (plot.points ? "linespoints" : "lines") << " lw 2 title "
+           << literal(plot.series[k].title);
+  script << "\n";
+  return run(png, script.str());
+}
+
+std::string Plotter::map(const std::string &png, const std::vector<double> &values, int64_t nx,
+                         int64_t ny, double lx, double ly, const std::string &title,
+                         const std::string &label, const std::string &length_label) const {
+  if (program_.empty()) return "skipped " + png + ": " + missing_;
+  if (ny == 1) {
+    LinePlot plot;
+    plot.title = title;
+    plot.x_label = length_label;
+    plot.y_label = label;
+    Series s;
+    s.title = label;
+    for (int64_t i = 0; i < nx; ++i) {
+      s.x.push_back(lx * static_cast<double>(i) / static_cast<double>(nx));
+      s.y.push_back(values[static_cast<size_t>(i)]);
+    }
+    plot.series.push_back(std::move(s));
+    return lines(png, plot);
+  }
+  // The values as raw doubles, x fastest, read by gnuplot's binary array format.
+  const std::string data = png + ".bin";
+  {
+    std::ofstream file(data, std::ios::binary);
+    file.write(reinterpret_cast<const char *>(values.data()),
+               static_cast<std::streamsize>(values.size() * sizeof(double)));
+    if (!file) return "skipped " + png + ": cannot write " + data;
+  }
+  std::ostringstream script;
+  script.precision(17);
+  const double dx = lx / static_cast<double>(nx), dy = ly / static_cast<double>(ny);
+  script << "set title " << literal(title) << "\n"
+         << "set xlabel " << literal(length_label) << "\nset ylabel " << literal(length_label)
+         << "\nset cblabel " << literal(label) << "\n"
+         << "set size ratio -1\nset palette rgb 33,13,10\n"
+         << "set xrange [0:" << lx << "]\nset yrange [0:" << ly << "]\n"
+         << "plot " << literal(data) << " binary array=(" << nx << "," << ny
+         << ") format='%float64' dx=" << dx << " dy=" << dy << " origin=(" << dx / 2 << ","
+         << dy / 2 << ") with image notitle\n";
+  const std::string note = run(png, script.str());
+  std::error_code ignored;
+  std::filesystem::remove(data, ignored);
+  return note;
+}
+
+}  // namespace cli
