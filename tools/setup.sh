@@ -3,7 +3,10 @@
 # Needs root (or sudo) only when something has to be installed.
 set -euo pipefail
 
-packages=(g++ gfortran cmake make pkg-config libfftw3-dev googletest libgtest-dev)
+# The core library needs FFTW only; the command reads scene files (toml++) and measured
+# surfaces (.x3p: libzip, pugixml) and draws its pictures with gnuplot (optional at run time).
+packages=(g++ gfortran cmake make pkg-config libfftw3-dev googletest libgtest-dev
+          libtomlplusplus-dev libzip-dev libpugixml-dev gnuplot-nox)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -4,6 +4,7 @@
 // one place where errors become messages and exit statuses.
 #include <cstdio>
 #include <exception>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -78,11 +79,12 @@ int dispatch(const std::vector<std::string> &arguments) {
       std::printf("%s", describe(name).c_str());
       return exit_converged;
     }
-    if (first.empty() || first[0] != '-')
-      throw usage_error(first + ": not a command (run, compare, sweep, info) nor an option"
-                        "\nRun 'asperity --help' for the commands.");
+    // asperity SCENE is asperity run SCENE; another word is a mistyped command.
+    if ((first.empty() || first[0] != '-') && !std::ifstream(first))
+      throw usage_error(first + ": not a command (run, compare, sweep, info), an option or a "
+                        "scene file\nRun 'asperity --help' for the commands.");
   }
-  // No command: run, on the built-in scene unless a scene follows.
+  // No command: run, on the built-in scene unless a scene comes first.
   return run_command(arguments);
 }
 

@@ -290,8 +290,17 @@ SolverSpec read_solver(SceneTable t) {
   const toml::node *named = t.node("algorithm");
   s.where = (named != nullptr ? where(named->source()) : std::string("built-in default")) +
             ": solver.algorithm";
-  for (const char *key : {"tolerance", "max_iterations", "stall_window"})
-    if (t.has(key)) s.options.push_back(read_option(t, key));
+  // The options every algorithm has, checked here for their type and sign (the library
+  // checks their ranges).
+  auto common = [&](const std::string &key, double value) {
+    const toml::node *node = t.node(key);
+    s.options.push_back({key, true, value, "", where(node->source()) + ": " + t.key_name(key)});
+  };
+  if (t.has("tolerance")) common("tolerance", t.positive("tolerance"));
+  if (t.has("max_iterations"))
+    common("max_iterations", static_cast<double>(t.integer("max_iterations", 1)));
+  if (t.has("stall_window"))
+    common("stall_window", static_cast<double>(t.integer("stall_window", 0)));
   if (const toml::table *options = t.table("options")) {
     for (const OptionSetting &o : read_option_table(*options, t.key_name("options")))
       s.options.push_back(o);

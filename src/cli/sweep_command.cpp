@@ -56,7 +56,8 @@ int run_sweep(Session &session) {
               "contact", "iterations", "time", "termination");
   std::fflush(stdout);
 
-  CsvTable table({"step", "phase", column(scene.control.quantity, control_unit(control, s)),
+  const std::string control_column_unit = control == ASP_CONTROL_MEAN_PRESSURE ? pressure_unit : s.unit;
+  CsvTable table({"step", "phase", column("target_" + scene.control.quantity, control_column_unit),
                   column("mean_pressure", pressure_unit), column("penetration", s.unit),
                   column("mean_gap", s.unit), "contact_fraction",
                   column("total_force", pressure_unit), "iterations", column("seconds", "s"),

@@ -1,19 +1,26 @@
 #!/usr/bin/env bash
 # Checks the asperity command from the outside, as a user runs it:
-#   - every bad argument exits with status 2 before any work, with a message on standard error
-#     that names the argument and says what is wrong, and prints nothing on standard output;
-#   - --help documents the exit statuses; --version, --list-algorithms and --describe;
-#   - small solves: a converged one exits 0, one cut short exits 1, and the report says how the
-#     solve ended and never shows inf or nan;
-#   - --history writes a CSV file: a header with every column, then rows of numbers;
-#   - the progress line appears only when standard error is a terminal;
-#   - Ctrl-C cancels the solve cleanly (exit 1, reported as cancelled).
-# Grids are small (64 x 64 unless a case needs more) so that the whole check takes seconds.
-# Usage: check_command.sh PATH_TO_ASPERITY WORK_DIRECTORY
+#   - bad arguments and bad scenes exit with status 2 before any work, with a message on
+#     standard error naming the file, line and key (or the argument) and what is wrong, nothing
+#     on standard output and no output directory made;
+#   - --help for each command documents the exit statuses; --version, --list-algorithms,
+#     --describe and --print-scene (whose text is a valid scene);
+#   - run: a converged solve exits 0, one cut short exits 1; summary.csv, history.csv with
+#     their header lines, fields as .npy, PNG files that are PNG (or a note when pictures are
+#     off);
+#   - compare: two solvers on a tiny scene, their CSV columns and rows, the PNGs;
+#   - sweep: a small Table 5 sweep whose unloading branch lies below the loading one;
+#   - info and measured scenes: files written by NumPy (.npy and savetxt text), an .x3p, and a
+#     field written by run read back; units and missing points;
+#   - the progress line only on a terminal; Ctrl-C cancels cleanly.
+# Usage: check_command.sh PATH_TO_ASPERITY SOURCE_DIRECTORY WORK_DIRECTORY
 set -u
-cli=$1 work=$2
+cli=$1 source=$2 work=$3
+scenes=$source/tests/cli/scenes data=$source/tests/io/data
 rm -rf "$work" && mkdir -p "$work" || exit 1
+cd "$work" || exit 1
 out=$work/stdout err=$work/stderr
+small=$scenes/small.toml
 
 passed=0 failed=0 skipped=0
 fail() { echo "FAIL: $*"; failed=$((failed + 1)); }
@@ -24,22 +31,26 @@ show() { local a s=asperity; for a in "$@"; do s+=" $(printf '%q' "$a")"; done; 
 # run ARGS...: runs the command; standard output and error go to files, the status to $rc.
 run() { "$cli" "$@" > "$out" 2> "$err" < /dev/null; rc=$?; }
 
-# bad ARGUMENT PROBLEM ARGS...: the command run with ARGS exits 2 and says on standard error
-# ARGUMENT (literally) and PROBLEM (an extended regular expression), with nothing on stdout.
+# bad WHAT PROBLEM ARGS...: the command run with ARGS exits 2 and says on standard error WHAT
+# (literally: the place and key, or the argument) and PROBLEM (an extended regular
+# expression), with nothing on standard output and no output directory left behind.
 bad() {
-  local argument=$1 problem=$2
+  local what=$1 problem=$2
   shift 2
-  run "$@"
-  local what
-  what=$(show "$@")
+  rm -rf "$work/refused-output"
+  run "$@" --output "$work/refused-output"
+  local shown
+  shown=$(show "$@")
   if [ "$rc" -ne 2 ]; then
-    fail "$what: exit status $rc, expected 2; stderr: $(cat "$err")"
-  elif ! grep -qF -- "$argument" "$err"; then
-    fail "$what: the message does not name '$argument': $(cat "$err")"
+    fail "$shown: exit status $rc, expected 2; stderr: $(cat "$err")"
+  elif ! grep -qF -- "$what" "$err"; then
+    fail "$shown: the message does not name '$what': $(cat "$err")"
   elif ! grep -qE -- "$problem" "$err"; then
-    fail "$what: the message does not say '$problem': $(cat "$err")"
+    fail "$shown: the message does not say '$problem': $(cat "$err")"
   elif [ -s "$out" ]; then
-    fail "$what: printed on standard output: $(cat "$out")"
+    fail "$shown: printed on standard output: $(cat "$out")"
+  elif [ -e "$work/refused-output" ]; then
+    fail "$shown: made the output directory before refusing"
   else
     pass
   fi
@@ -54,126 +65,112 @@ expect() {
 
 has() { grep -qE -- "$1" "$2"; }
 lacks() { ! grep -qE -- "$1" "$2"; }
+is_png() { [ "$(head -c 8 "$1" | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a ]; }
+is_npy() { [ "$(head -c 6 "$1" | od -An -c | tr -d ' \n')" = '223NUMPY' ]; }
+header_of() { head -n 1 "$1"; }
+# scene NAME <<EOF: a scene file in the work directory, from standard input.
+scene() { cat > "$work/$1"; }
+have_gnuplot=no
+command -v gnuplot > /dev/null && have_gnuplot=yes
 
-# ---- bad arguments: exit 2, the argument and its problem named --------------------------------
-# --size below 33 used to fail inside the library with a message about cutoffs.
-bad --size "too small: at least 33" --size 16
-bad --size "too small: at least 33" --size 32
-bad --size "too small" --size -64
-# An empty value used to read as 0.
-bad --size "empty" --size ''
-bad --size "not a whole number" --size 12abc
-bad --size "not a whole number" --size 64.0
-bad --size "not a whole number" --size ' 64'
-# 1518500250^2 * 8 bytes wraps a 64-bit size.
-bad --size "too large" --size 1518500250
-bad --size "too large" --size 9223372036854775807
-bad --size "out of range" --size 99999999999999999999
-# A seed beyond 64 bits used to become INT64_MAX silently.
-bad --seed "out of range" --seed 99999999999999999999
-bad --seed "out of range" --seed -99999999999999999999
-bad --seed "not a whole number" --seed 1e3
-# Options, positional arguments and flags used to be answered with "needs a value".
-bad -x "unknown option" -x
-bad --frobnicate "unknown option" --frobnicate
-bad --frobnicate "unknown option" --frobnicate=3
-bad foo "unexpected argument" foo
-bad scene.txt "unexpected argument" --size 64 scene.txt
-bad --size "needs a value" --size
-bad --size "needs a value" --size --seed 3
-bad --version "takes no value" --version=1
-# A mean pressure of 1e308 used to print inf and -nan and exit 0.
-bad --mean-pressure "out of range" --mean-pressure 1e308
-bad --mean-pressure "out of range" --mean-pressure 1.5
-bad --mean-pressure "out of range" --mean-pressure -0.001
-bad --mean-pressure "too large for a double" --mean-pressure 1e400
-bad --mean-pressure "not a finite number" --mean-pressure nan
-bad --mean-pressure "not a finite number" --mean-pressure inf
-bad --mean-pressure "empty" --mean-pressure ''
-bad --penetration "out of range" --penetration 1.5
-bad --penetration "out of range" --penetration -0.001
-bad --penetration "not a finite number" --penetration nan
-bad --mean-pressure "cannot be combined with --penetration" --penetration 0.004 --mean-pressure 0.01
-bad --penetration "cannot be combined with --mean-pressure" --mean-pressure 0.01 --penetration 0.004
-bad --tolerance "not a number" --tolerance abc
-bad --tolerance "tolerance" --tolerance 0
-bad --algorithm "unknown algorithm" --algorithm no-such-solver
-bad --algorithm "unknown algorithm" --algorithm no-such-solver --describe
-bad --algorithm "empty" --algorithm ''
-bad --option "expected NAME=VALUE" --option tolerance
-bad --option "NAME is empty" --option =3
-bad --option "no option 'no_such_option'" --option no_such_option=1
-bad --option "not a finite number" --option tolerance=inf
-bad --option "max_iterations" --option max_iterations=0
-bad --option "tolerance" --option tolerance=fast
-bad --history "empty" --history ''
-bad --history "cannot open for writing" --size 64 --history "$work/no/such/directory/h.csv"
+# ---- bad arguments --------------------------------------------------------------------------
+bad "frobnicate" "not a command" frobnicate
+bad "--frobnicate" "unknown option" run "$small" --frobnicate
+bad "--tolerance" "needs a value" run "$small" --tolerance
+bad "--no-plots" "takes no value" run "$small" --no-plots=yes
+bad "second.toml" "a second scene" run "$small" second.toml
+bad "--tolerance abc" "solver.tolerance: expected a number, got a string" run "$small" --tolerance abc
+bad "--set grid.nx=1" "grid.nx: must be >= 2" run "$small" --set grid.nx=1
+bad "--set" "expected KEY=VALUE" run "$small" --set grid.nx
+bad "--algorithm nosuch" "unknown algorithm|known" run "$small" --algorithm nosuch
+bad "--option frob=1" "frob" run "$small" --option frob=1
+bad "--option max_iterations=0" "max_iterations" run "$small" --option max_iterations=0
 
-# ---- information ---------------------------------------------------------------------------
-run --help
-expect "--help exits 0" [ "$rc" -eq 0 ]
-expect "--help documents exit statuses 0 to 3" \
-  bash -c 'grep -q "Exit status" "$1" && grep -qE "^  0 " "$1" && grep -qE "^  1 " "$1" &&
-           grep -qE "^  2 " "$1" && grep -qE "^  3 " "$1"' _ "$out"
-expect "--help names every option" bash -c '
-  for o in --size --seed --mean-pressure --penetration --algorithm --tolerance --option --history \
-           --version --list-algorithms --describe; do
-    grep -q -- "$o" "$1" || exit 1
-  done' _ "$out"
-run -h
-expect "-h prints the help" has "^usage: asperity" "$out"
+# ---- bad scenes: the file, line and key, and what is wrong ----------------------------------
+bad "no-such-scene.toml" "cannot open the scene file" run no-such-scene.toml
 
+scene broken.toml <<'S'
+[grid]
+nx = 64
+ny = = 3
+S
+bad "broken.toml:3" "not a valid TOML file" run broken.toml
+
+sed 's/^nx = 64$/nx = -4/' "$small" > negative.toml
+bad "negative.toml:6:6: grid.nx" "must be >= 2, got -4" run negative.toml
+
+sed 's/^nx = 64$/nx = "big"/' "$small" > string.toml
+bad "string.toml:6:6: grid.nx" "expected a whole number, got a string" run string.toml
+
+sed 's/^nx = 64$/nx = 64.5/' "$small" > fraction.toml
+bad "fraction.toml:6:6: grid.nx" "expected a whole number, got a number" run fraction.toml
+
+sed 's/^ny = 64$/nyy = 64/' "$small" > unknown.toml
+bad "unknown.toml:7:7: grid.nyy" "unknown key" run unknown.toml
+
+sed 's/^\[control\]$/[contrl]/' "$small" > unknown_table.toml
+bad "unknown_table.toml" "control.*missing" run unknown_table.toml
+
+grep -v '^contact_modulus' "$small" > missing.toml
+bad "substrate.contact_modulus" "missing" run missing.toml
+
+sed 's/^unit = "um"$/unit = "furlong"/' "$small" > units.toml
+bad "units.toml:9:8: grid.unit" "furlong" run units.toml
+
+sed 's/^value = 0.01$/value = inf/' "$small" > infinite.toml
+bad "infinite.toml" "control.value: expected a finite number" run infinite.toml
+
+sed 's/^quantity = "mean_pressure"$/quantity = "force"/' "$small" > quantity.toml
+bad "quantity.toml:23:12: control.quantity" "is not one of" run quantity.toml
+
+sed 's/^rms_slope = 0.1$/rms_slope = 0.1\nrms_height = 0.01/' "$small" > both.toml
+bad "topography.rms_height" "either 'rms_slope' or 'rms_height'" run both.toml
+
+# A solver that does not serve the scene is refused before any work.
+bad "solver.algorithm" "does not handle a soft wall" run "$small" \
+  --set interaction.type=soft_wall --set interaction.gamma_r=1e-3 --set interaction.range=1e-3
+bad "solver.algorithm" "does not offer mean_pressure" run "$small" --algorithm lbfgsb
+
+# An output directory that cannot be made.
+touch a-file
+run "$small" --output a-file/below
+expect "an output directory below a file exits 2" [ "$rc" -eq 2 ]
+expect "the message names output.directory" has "output.directory" "$err"
+
+# ---- information ----------------------------------------------------------------------------
+for command in "" run compare sweep info; do
+  run $command --help
+  expect "asperity $command --help exits 0" [ "$rc" -eq 0 ]
+  expect "asperity $command --help documents the exit statuses" has "^Exit status:" "$out"
+done
 run --version
-expect "--version exits 0" [ "$rc" -eq 0 ]
-expect "--version prints the version" has "^asperity [0-9]+\.[0-9]+\.[0-9]+" "$out"
-expect "--version prints one line" [ "$(wc -l < "$out")" -eq 1 ]
-
+expect "--version prints the version" has "^asperity [0-9]+\.[0-9]+\.[0-9]+$" "$out"
 run --list-algorithms
-expect "--list-algorithms exits 0" [ "$rc" -eq 0 ]
-expect "--list-algorithms lists pk" has "^pk$" "$out"
+expect "--list-algorithms lists pk and lbfgs_fourier" \
+  bash -c 'grep -qx pk "$1" && grep -qx lbfgs_fourier "$1"' _ "$out"
+run --describe bugnicourt
+expect "--describe bugnicourt describes it" has "^bugnicourt: " "$out"
+run --print-scene
+cp "$out" printed.toml
+run run printed.toml --check
+expect "the printed built-in scene is a valid scene (stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
+expect "--check solves nothing and writes nothing" [ ! -e printed-output ]
+expect "the built-in scene is adhesive" has "^interaction +soft wall" "$out"
 
-run --describe
-expect "--describe exits 0" [ "$rc" -eq 0 ]
-expect "--describe describes pk" has "^pk: " "$out"
-expect "--describe lists the options" has "tolerance" "$out"
-run --describe --algorithm pk
-expect "--describe --algorithm pk exits 0" [ "$rc" -eq 0 ]
-
-# ---- solves --------------------------------------------------------------------------------
-run --size 64
-expect "a 64 x 64 solve exits 0 (stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
+# ---- run ------------------------------------------------------------------------------------
+run run "$small" --output small-run
+expect "a small solve exits 0 (stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
 expect "the report says it converged" has "^termination +converged" "$out"
 expect "the report gives the contact fraction" has "^contact fraction +0\.[0-9]+" "$out"
 expect "the report shows no inf or nan" lacks "inf|nan" "$out"
-# stderr is a file here: no progress line, nothing at all.
-expect "no progress line when stderr is not a terminal" [ ! -s "$err" ]
-
-run --size=64 --seed=-7 --mean-pressure=0.01 --tolerance=1e-6 --option stall_window=50
-expect "the --name=value form works (exit $rc, stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
-expect "the report names the seed" has "seed -7" "$out"
-
-# Solvers that offer no load control (lbfgsb; bugnicourt on the gap) solve the scene under
-# penetration control; under load control they are refused, naming the control.
-run --size 64 --algorithm lbfgsb --penetration 0.004
-expect "lbfgsb under --penetration exits 0 (stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
-expect "the report gives the penetration asked for" has "^penetration +0\.004$" "$out"
-run --size 64 --algorithm bugnicourt --option variable=gap --penetration 0.004
-expect "bugnicourt on the gap under --penetration exits 0 (stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
-bad --algorithm "does not offer mean_pressure control" --size 64 --algorithm lbfgsb
-
-run --size 64 --option max_iterations=3
-expect "a solve cut short by the iteration limit exits 1" [ "$rc" -eq 1 ]
-expect "the report says the iteration limit ended it" has "^termination +iteration limit" "$out"
-expect "a solve cut short shows no inf or nan" lacks "inf|nan" "$out"
-
-# ---- history -------------------------------------------------------------------------------
-csv=$work/history.csv
-run --size 64 --history "$csv"
-expect "a solve with --history exits 0 (stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
-expect "--history writes the file" [ -s "$csv" ]
-header=iteration,evaluations,transforms,seconds,error,objective,contact_fraction
-expect "the history has the header line" [ "$(head -n 1 "$csv")" = "$header" ]
-expect "the history has at least one row" [ "$(wc -l < "$csv")" -ge 2 ]
+expect "lengths are given in the scene's unit" has "^penetration +[0-9.e-]+ um$" "$out"
+expect "summary.csv has its header" [ "$(header_of small-run/summary.csv)" = "quantity,value,unit" ]
+expect "summary.csv gives the mean pressure asked for, in units of E*" awk -F, '
+  $1 == "mean_pressure" { found = ($2 - 0.01 < 1e-15 && 0.01 - $2 < 1e-15 && $3 == "E* unit") }
+  END { exit found ? 0 : 1 }' small-run/summary.csv
+expect "summary.csv gives the penetration in um" has "^penetration,[0-9.e-]+,um$" small-run/summary.csv
+expect "history.csv has its header" [ "$(header_of small-run/history.csv)" = \
+  "iteration,evaluations,transforms,seconds [s],error,objective,contact_fraction" ]
 expect "every history row has 7 numeric columns" awk -F, '
   NR > 1 {
     if (NF != 7) exit 1
@@ -181,35 +178,170 @@ expect "every history row has 7 numeric columns" awk -F, '
       if ($i !~ /^-?[0-9]+(\.[0-9]*)?([eE][-+]?[0-9]+)?$/) exit 1
     rows++
   }
-  END { exit rows > 0 ? 0 : 1 }' "$csv"
-expect "the history starts at iteration 0" [ "$(sed -n 2p "$csv" | cut -d, -f1)" = 0 ]
-expect "the report says where the history went" has "^history .*history\.csv" "$out"
+  END { exit rows > 0 ? 0 : 1 }' small-run/history.csv
+for field in pressure gap contact; do
+  expect "$field.npy is a NumPy file" is_npy "small-run/$field.npy"
+done
+expect "a .npy of 64 x 64 doubles has shape (64, 64)" \
+  bash -c "head -c 128 small-run/gap.npy | grep -q \"'shape': (64, 64)\""
+if [ "$have_gnuplot" = yes ]; then
+  for png in pressure gap contact convergence; do
+    expect "$png.png is a PNG file" is_png "small-run/$png.png"
+  done
+else
+  skip "gnuplot is not installed: no PNG to check"
+fi
+# stderr is a file here: no progress line, and nothing else either.
+expect "no progress line when stderr is not a terminal" [ ! -s "$err" ]
+
+# Pictures off, or no gnuplot: the run still succeeds and says why there is no PNG.
+ASPERITY_GNUPLOT= "$cli" run "$small" --output no-pictures > "$out" 2> "$err" < /dev/null
+rc=$?
+expect "a run without gnuplot exits 0" [ "$rc" -eq 0 ]
+expect "a run without gnuplot notes the skipped pictures" has "note: skipped .*pressure\.png" "$err"
+expect "a run without gnuplot writes no PNG" bash -c '! ls no-pictures/*.png 2> /dev/null'
+ASPERITY_GNUPLOT=/no/such/gnuplot "$cli" run "$small" --output bad-gnuplot > "$out" 2> "$err" < /dev/null
+expect "a missing gnuplot program is a note, not a failure (exit $?)" has "note: skipped" "$err"
+
+run run "$small" --option max_iterations=3 --output cut-short
+expect "a solve cut short by the iteration limit exits 1" [ "$rc" -eq 1 ]
+expect "the report says the iteration limit ended it" has "^termination +iteration limit" "$out"
+
+# The built-in scene, smaller, with its default solver: the adhesive soft wall.
+run --set grid.nx=128 --set grid.ny=128 --set topography.short_cutoff=0.0625 --output builtin
+expect "the built-in scene on 128 x 128 converges (exit $rc; stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
+expect "the built-in scene has tensile pressures (adhesion)" \
+  python3 -c "
+import struct, sys
+data = open('builtin/pressure.npy', 'rb').read()
+header = 10 + int.from_bytes(data[8:10], 'little')
+values = struct.unpack('<%dd' % ((len(data) - header) // 8), data[header:])
+sys.exit(0 if min(values) < 0 < max(values) else 1)"
 
 # A write that fails after the solve is a failure of the system: exit 3. A file-size limit of 0
-# makes every write to a file fail (EFBIG, with SIGXFSZ ignored); the report goes through a pipe,
-# which the limit does not cover.
-full=$work/limited.csv
-( trap '' XFSZ && ulimit -f 0 && exec "$cli" --size 64 --history "$full" 2>&1 < /dev/null ) |
+# makes every write to a file fail (EFBIG, with SIGXFSZ ignored); the report goes to a pipe.
+( trap '' XFSZ && ulimit -f 0 && exec "$cli" run "$small" --output limited 2>&1 < /dev/null ) |
   cat > "$out"
 rc=${PIPESTATUS[0]}
-expect "a history that cannot be written exits 3 (got $rc)" [ "$rc" -eq 3 ]
-expect "a history that cannot be written is named in the message" \
-  has "--history '.*limited\.csv': writing failed" "$out"
+expect "outputs that cannot be written exit 3 (got $rc)" [ "$rc" -eq 3 ]
+expect "a file that cannot be written is named" has "limited/.*: (writing failed|cannot)" "$out"
 
-# ---- terminal and interruption ---------------------------------------------------------------
+# ---- compare --------------------------------------------------------------------------------
+run compare "$small" --solvers pk,bugnicourt --output compared
+expect "comparing pk and bugnicourt exits 0 (stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
+expect "the comparison lists pk" has "^pk +converged" "$out"
+expect "the comparison lists bugnicourt" has "^bugnicourt +converged" "$out"
+expect "the comparison names the fastest" has "^fastest +(pk|bugnicourt)" "$out"
+expect "compare.csv has its header" [ "$(header_of compared/compare.csv)" = \
+  "algorithm,iteration,evaluations,transforms,seconds [s],error,objective,contact_fraction" ]
+expect "compare.csv has rows of both solvers" \
+  bash -c 'grep -q "^pk,0," "$1" && grep -q "^bugnicourt,0," "$1"' _ compared/compare.csv
+expect "compare_summary.csv has one row per solver" [ "$(wc -l < compared/compare_summary.csv)" -eq 3 ]
+expect "the two solvers agree on the pressure field to 1e-5" awk '
+  $1 == "bugnicourt" { exit ($NF + 0 < 1e-5) ? 0 : 1 }' "$out"
+if [ "$have_gnuplot" = yes ]; then
+  expect "error_vs_time.png is a PNG file" is_png compared/error_vs_time.png
+  expect "error_vs_iteration.png is a PNG file" is_png compared/error_vs_iteration.png
+fi
+bad "compare.solvers: lbfgs" "does not handle a non-adhesive hard wall|hard wall" \
+  compare "$small" --solvers pk,lbfgs
+run compare "$small" --output every
+expect "compare without --solvers runs every solver that serves the scene (exit $rc)" \
+  has "^bugnicourt +converged" "$out"
+expect "compare without --solvers lists the others as skipped" has "^skipped +lbfgs: " "$out"
+
+# ---- sweep ----------------------------------------------------------------------------------
+run sweep "$scenes/hysteresis.toml" --output swept
+expect "the Table 5 sweep exits 0 (stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
+expect "sweep.csv has its header" [ "$(header_of swept/sweep.csv)" = \
+  "step,phase,target_penetration,mean_pressure [E* unit],penetration,mean_gap,contact_fraction,total_force [E* unit],iterations,seconds [s],error,termination" ]
+expect "the sweep loads 23 steps and unloads 22" [ "$(grep -c ',loading,' swept/sweep.csv),$(grep -c ',unloading,' swept/sweep.csv)" = "23,22" ]
+# Hysteresis: at some penetration the unloading force lies clearly below the loading force.
+expect "unloading lies below loading somewhere (hysteresis)" awk -F, '
+  NR > 1 && $2 == "loading" { load[$3] = $4 }
+  NR > 1 && $2 == "unloading" && ($3 in load) && load[$3] - $4 > 0.005 { found = 1 }
+  END { exit found ? 0 : 1 }' swept/sweep.csv
+[ "$have_gnuplot" = yes ] && expect "sweep.png is a PNG file" is_png swept/sweep.png
+run sweep "$small" --quantity penetration --from 0 --to 0.002 --steps 2 --no-unload \
+  --algorithm lbfgsb --output swept-options
+expect "a sweep from options exits 0 (stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
+expect "a sweep from options has 3 steps" [ "$(wc -l < swept-options/sweep.csv)" -eq 4 ]
+bad "control" "a sweep needs control.sweep" sweep "$small"
+
+# ---- measured surfaces and info -------------------------------------------------------------
+# Files written by NumPy: .npy in C and Fortran order, float32; text from numpy.savetxt.
+for file in c_order.npy fortran_order.npy float32.npy savetxt_comments.txt gwyddion.txt surface.x3p; do
+  run info "$data/$file" --output "info-$file"
+  expect "info reads $file (stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
+  expect "info on $file prints the rms slope" has "^rms slope +[0-9]" "$out"
+  expect "info on $file writes the power spectrum" [ -s "info-$file/power_spectrum.csv" ]
+done
+run info "$data/surface.x3p" --output info-x3p
+expect "an .x3p gives its size in metres" has "^surface .*x3p.* m$" "$out"
+run info "$data/gwyddion.txt" --output info-gwy
+expect "Gwyddion's header gives the size in um" has "box 10 um x 7.5 um" "$out"
+bad "ragged.txt" "line" info "$data/ragged.txt"
+bad "truncated.npy" "truncated" info "$data/truncated.npy"
+bad "wrong_md5.x3p" "MD5|md5|checksum" info "$data/wrong_md5.x3p"
+bad "savetxt_nan.txt" "missing" info "$data/savetxt_nan.txt"
+run info "$data/savetxt_nan.txt" --missing interpolate --output info-filled
+expect "info --missing interpolate fills the missing points" has "^note +filled" "$out"
+
+# A field written by run, read back as a measured surface: the free substrate by default.
+cp small-run/gap.npy measured.npy
+scene measured.toml <<'S'
+[topography]
+type = "file"
+path = "measured.npy"
+height_unit = "um"
+pixel_size = 0.015625
+
+[grid]
+unit = "um"
+
+[substrate]
+contact_modulus = 1.0
+
+[control]
+quantity = "mean_pressure"
+value = 0.001
+S
+run run measured.toml --output measured-run
+expect "a measured scene solves (exit $rc; stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
+expect "a measured scene defaults to the free substrate" has "^substrate +free" "$out"
+expect "the measured surface is 64 x 64 pixels, 1 um x 1 um" has "64 x 64 pixels, box 1 um x 1 um" "$out"
+sed 's/^height_unit = "um"$/height_unit = "nm"/' measured.toml > measured_nm.toml
+run info measured.toml --output info-um
+um=$(awk '/^rms height/ { print $3 }' "$out")
+run info measured_nm.toml --output info-nm
+nm=$(awk '/^rms height/ { print $3 }' "$out")
+expect "the same file read in nm has an rms height 1000 times smaller ($um um, $nm um)" \
+  awk -v a="$um" -v b="$nm" 'BEGIN { r = a / b; exit (r > 999.999 && r < 1000.001) ? 0 : 1 }' 
+sed '/^pixel_size/d' measured.toml > no_size.toml
+bad "topography.path" "does not give its physical size" run no_size.toml
+sed 's/^path = .*/path = "absent.npy"/' measured.toml > absent.toml
+bad "absent.npy" "" run absent.toml
+# Round trip: the topography run writes, read back by info, has the statistics info gives for
+# the scene itself (the .npy keeps every bit; the pixel size and unit are the scene's).
+run run "$small" --set output.fields='["topography"]' --output topo
+run info topo/topography.npy --pixel-size 0.015625 --height-unit um --output info-topo
+grep -E '^rms (height|slope|curvature)' "$out" > from-file.txt
+run info "$small" --output info-scene
+grep -E '^rms (height|slope|curvature)' "$out" > from-scene.txt
+expect "info gives three statistics" [ "$(wc -l < from-scene.txt)" -eq 3 ]
+expect "info of a scene and of its written topography agree" cmp -s from-file.txt from-scene.txt
+
+# ---- terminal and interruption --------------------------------------------------------------
 # script(1) from util-linux runs the command on a pseudo-terminal.
 if script -qefc true /dev/null > /dev/null 2>&1; then
-  script -qefc "$(printf '%q' "$cli") --size 64" /dev/null > "$out" 2>&1 < /dev/null
+  script -qefc "$(printf '%q' "$cli") run $(printf '%q' "$small") --output tty" /dev/null > "$out" 2>&1 < /dev/null
   expect "a progress line is drawn on a terminal" has $'\riteration 0 +error ' "$out"
-  expect "the progress line is erased before the report" has $'\r *\rasperity ' "$out"
 else
   skip "no script(1) to run the command on a terminal"
 fi
-
-# An endless solve (tolerance out of reach, no stall detection), interrupted after 0.3 s.
 if command -v timeout > /dev/null; then
-  timeout --preserve-status -s INT 0.3 "$cli" --size 64 --tolerance 1e-300 \
-    --option stall_window=0 --option max_iterations=1e15 > "$out" 2> "$err" < /dev/null
+  timeout --preserve-status -s INT 0.5 "$cli" run "$small" --tolerance 1e-300 \
+    --option stall_window=0 --option max_iterations=1e15 --output endless > "$out" 2> "$err" < /dev/null
   rc=$?
   expect "Ctrl-C ends the solve with exit 1 (got $rc)" [ "$rc" -eq 1 ]
   expect "Ctrl-C is reported as cancelled" has "^termination +cancelled" "$out"

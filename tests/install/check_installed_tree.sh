@@ -16,12 +16,16 @@ pc_file=$(find "$prefix" -name asperity.pc | head -n 1)
 libdir=$(dirname "$(dirname "$pc_file")")
 libdir_in_prefix=${libdir#"$prefix"/}
 
+# The built-in scene made small, its outputs kept in the work directory.
+small_scene=(--set grid.nx=64 --set grid.ny=64 --set topography.short_cutoff=0.125
+             --output "$work/cli-output")
+
 # run_installed_cli DIR: runs DIR/bin/asperity on a small scene without LD_LIBRARY_PATH and,
 # for a shared build, checks that libasperity is loaded from DIR and not from wherever else the
 # loader might find one.
 run_installed_cli() {
   local dir=$1 loaded
-  env -u LD_LIBRARY_PATH "$dir/bin/asperity" --size 64
+  env -u LD_LIBRARY_PATH "$dir/bin/asperity" "${small_scene[@]}"
   if compgen -G "$dir/$libdir_in_prefix/libasperity.so*" > /dev/null && command -v ldd > /dev/null
   then
     loaded=$(env -u LD_LIBRARY_PATH ldd "$dir/bin/asperity" | awk '$1 ~ /^libasperity\./ {print $3}')
@@ -48,7 +52,8 @@ case $cli in
     # Configured for a system library directory, where the loader looks anyway, so the command
     # has no RPATH; from this temporary prefix it has to be told where the library is.
     echo "== the installed command (no RPATH: configured for a system libdir)"
-    LD_LIBRARY_PATH=$libdir${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH} "$prefix/bin/asperity" --size 64
+    LD_LIBRARY_PATH=$libdir${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH} "$prefix/bin/asperity" \
+      "${small_scene[@]}"
     ;;
   none) ;;
   *) echo "unknown CLI mode '$cli'"; exit 1 ;;
