@@ -8,6 +8,13 @@
 #include "solvers/solver.hpp"
 
 namespace asp {
+namespace {
+
+// An energy rise larger than this fraction of the energy is a rise (smaller ones may be
+// rounding of the sums that make the energy).
+constexpr double rise_resolved = 1e-6;
+
+}  // namespace
 
 double automatic_time_step(Formulation &f) {
   const double curvature = f.largest_curvature();
@@ -36,6 +43,8 @@ void fire(Formulation &f, Monitor &monitor, const FireParameters &parameters) {
   // The gradient is the negative force; the solver keeps the gradient and flips signs.
   double value = f.value_and_gradient(x, F);
   if (monitor.should_stop(0, observe(f, x, F, value, monitor))) return;
+  double previous_value = value;  // before the last step
+  double last_step = 0.0;         // the time step of the last move, x += last_step v
   for (std::int64_t iteration = 1;; ++iteration) {
     // P = F.v with F = -gradient.
     const double power = -f.dot(F, v);
@@ -43,7 +52,22 @@ void fire(Formulation &f, Monitor &monitor, const FireParameters &parameters) {
       monitor.declare_breakdown();
       return;
     }
-    if (power > 0.0) {
+    // Moving with positive power lowers the energy; an energy that rose clearly all the same
+    // means the last step went beyond the stability of the stiffest modes (a stiff wall the
+    // largest step does not account for). That step is undone, as ASE's FIRE does with its
+    // downhill check, and the motion restarts with a smaller step: a half step back (below)
+    // would leave the state where the energy exploded. Rises within rounding do not count.
+    const bool rose = value - previous_value > rise_resolved * std::fabs(previous_value);
+    if (rose) {
+      loops::for_each(n, [&](std::int64_t i) {
+        x[i] -= last_step * v[i];
+        v[i] = 0.0;
+      });
+      positive_steps = 0;
+      dt = last_step * parameters.shrink;
+      alpha = parameters.mixing;
+      value = f.value_and_gradient(x, F);
+    } else if (power > 0.0) {
       if (++positive_steps > parameters.delay) {
         dt = std::min(dt * parameters.growth, largest);
         alpha *= parameters.mixing_decay;
@@ -72,6 +96,8 @@ void fire(Formulation &f, Monitor &monitor, const FireParameters &parameters) {
       v[i] = keep * v[i] - mix * F[i];
       x[i] += dt * v[i];
     });
+    previous_value = value;
+    last_step = dt;
     value = f.value_and_gradient(x, F);
     if (monitor.should_stop(iteration, observe(f, x, F, value, monitor))) return;
   }
