@@ -28,6 +28,7 @@ const char *const info_help =
     "                    nm, pm, A)\n"
     "  --pixel-size S    the pixel size, in the heights' unit, when the file does not say\n"
     "                    (otherwise lengths are in pixels)\n"
+    "  --unit U          show lengths in this unit (m, mm, um, nm, pm, A)\n"
     "  --missing M       refuse (default) or interpolate missing points (NaN)\n"
     "  --detrend D       none (default), mean, plane or curvature\n"
     "  --bins N          bins of the power spectrum (default: half the larger pixel count)\n"
@@ -52,7 +53,8 @@ std::string stem(const std::string &path) {
 int info_command(const std::vector<std::string> &arguments) {
   Arguments args(arguments, "asperity info");
   std::vector<Override> overrides;
-  std::string path, output, format = "auto", height_unit, missing = "refuse", detrend = "none";
+  std::string path, output, format = "auto", height_unit, unit, missing = "refuse",
+                                                            detrend = "none";
   double pixel_size = 0.0;
   int64_t bins = 0;
   bool plots = true;
@@ -78,6 +80,8 @@ int info_command(const std::vector<std::string> &arguments) {
         args.refuse("expected text, npy or x3p");
     } else if (args.is("--height-unit")) {
       height_unit = args.value();
+    } else if (args.is("--unit")) {
+      unit = args.value();
     } else if (args.is("--pixel-size")) {
       pixel_size = number(args.value(), false);
     } else if (args.is("--missing")) {
@@ -115,13 +119,18 @@ int info_command(const std::vector<std::string> &arguments) {
     t.kind = TopographyKind::file;
     t.path = path;
     t.format = format;
-    if (!height_unit.empty()) {
+    for (const auto &[option, value] : {std::pair<const char *, const std::string *>{
+                                             "--height-unit", &height_unit},
+                                         {"--unit", &unit}}) {
+      if (value->empty()) continue;
       try {
-        asp::io::unit_in_metres(height_unit);
+        asp::io::unit_in_metres(*value);
       } catch (const std::invalid_argument &e) {
-        throw usage_error("asperity info: --height-unit " + height_unit + ": " + e.what());
+        throw usage_error(std::string("asperity info: ") + option + " " + *value + ": " +
+                          e.what());
       }
     }
+    scene.grid.unit = unit;
     t.height_unit = height_unit;
     t.pixel_size = pixel_size;
     t.fill_missing = missing == "interpolate";
