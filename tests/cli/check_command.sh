@@ -157,6 +157,15 @@ expect "the printed built-in scene is a valid scene (stderr: $(cat "$err"))" [ "
 expect "--check solves nothing and writes nothing" [ ! -e printed-output ]
 expect "the built-in scene is adhesive" has "^interaction +soft wall" "$out"
 
+# Every example scene is valid and its solver serves it.
+for example in "$source"/examples/scenes/*.toml; do
+  run run "$example" --check
+  expect "$(basename "$example") is a valid scene (stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
+done
+run compare "$source/examples/scenes/measured_surface.toml" --output measured-compare
+expect "the example measured scene compares (exit $rc; stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
+expect "the example measured surface is read in um" has "box 20 um x 20 um" "$out"
+
 # ---- run ------------------------------------------------------------------------------------
 run run "$small" --output small-run
 expect "a small solve exits 0 (stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
