@@ -1,5 +1,8 @@
 #include "arguments.hpp"
 
+#include <cstdio>
+
+#include "commands.hpp"
 #include "exit_status.hpp"
 
 namespace cli {
@@ -98,6 +101,23 @@ bool Arguments::scene_option(std::vector<Override> &overrides) {
     add("output.plots", "false", "--no-plots");
   } else {
     return false;
+  }
+  return true;
+}
+
+bool read_scene_arguments(Arguments &args, const char *help, SceneArguments &out,
+                          const std::function<bool(Arguments &)> &own) {
+  while (args.next()) {
+    if (args.is_flag("--help") || args.is_flag("-h")) {
+      std::printf("%s%s\n%s", help, scene_options_help, exit_status_help);
+      return false;
+    }
+    if (args.scene_option(out.overrides) || own(args)) continue;
+    if (args.positional() && out.scene_path.empty()) {
+      out.scene_path = args.current();
+      continue;
+    }
+    args.refuse(args.positional() ? "a second scene: the command takes one" : "unknown option");
   }
   return true;
 }

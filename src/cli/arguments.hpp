@@ -2,6 +2,7 @@
 // positional arguments. Refusals name the argument and end with a pointer to --help.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -42,5 +43,19 @@ class Arguments {
 
 // The help text of the scene overrides, for each command's --help.
 extern const char *const scene_options_help;
+
+// What run, compare and sweep share on their command lines: the scene's overrides and one
+// SCENE (empty: the built-in scene).
+struct SceneArguments {
+  std::vector<Override> overrides;
+  std::string scene_path;
+};
+
+// Reads a scene command's arguments: --help (prints help, the scene overrides' help and the
+// exit statuses, and returns false), the scene overrides, one SCENE, and the command's own
+// options through `own`, which returns true when it took the current argument. Anything else
+// is refused.
+bool read_scene_arguments(Arguments &args, const char *help, SceneArguments &out,
+                          const std::function<bool(Arguments &)> &own);
 
 }  // namespace cli

@@ -86,28 +86,19 @@ void warm_up(asp_solver *solver, Contact &contact, int control, double value) {
 
 int compare_command(const std::vector<std::string> &arguments) {
   Arguments args(arguments, "asperity compare");
-  std::vector<Override> overrides;
-  std::string scene_path;
-  while (args.next()) {
-    if (args.is_flag("--help") || args.is_flag("-h")) {
-      std::printf("%s%s\n%s", compare_help, scene_options_help, exit_status_help);
-      return exit_converged;
-    }
-    if (args.scene_option(overrides)) continue;
-    if (args.is("--solvers")) {
-      const std::string v = args.value();
-      std::string array = "[";
-      for (const std::string &name : split_names(v, ','))
-        array += (array.size() > 1 ? ", \"" : "\"") + name + "\"";
-      overrides.push_back({"compare.solvers=" + array + "]", "--solvers " + v});
-      continue;
-    }
-    if (args.positional() && scene_path.empty()) {
-      scene_path = args.current();
-      continue;
-    }
-    args.refuse(args.positional() ? "a second scene: compare takes one" : "unknown option");
-  }
+  SceneArguments a;
+  const bool proceed = read_scene_arguments(args, compare_help, a, [&](Arguments &args) {
+    if (!args.is("--solvers")) return false;
+    const std::string v = args.value();
+    std::string array = "[";
+    for (const std::string &name : split_names(v, ','))
+      array += (array.size() > 1 ? ", \"" : "\"") + name + "\"";
+    a.overrides.push_back({"compare.solvers=" + array + "]", "--solvers " + v});
+    return true;
+  });
+  if (!proceed) return exit_converged;
+  const std::vector<Override> &overrides = a.overrides;
+  const std::string &scene_path = a.scene_path;
 
   Session session = open_session(scene_path, overrides, false);
   const Scene &scene = session.scene;

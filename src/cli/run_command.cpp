@@ -46,25 +46,14 @@ const char *const exit_status_help =
 
 int run_command(const std::vector<std::string> &arguments) {
   Arguments args(arguments, "asperity run");
-  std::vector<Override> overrides;
-  std::string scene_path;
+  SceneArguments a;
   bool check_only = false;
-  while (args.next()) {
-    if (args.is_flag("--help") || args.is_flag("-h")) {
-      std::printf("%s%s\n%s", run_help, scene_options_help, exit_status_help);
-      return exit_converged;
-    }
-    if (args.scene_option(overrides)) continue;
-    if (args.is_flag("--check")) {
-      check_only = true;
-      continue;
-    }
-    if (args.positional() && scene_path.empty()) {
-      scene_path = args.current();
-      continue;
-    }
-    args.refuse(args.positional() ? "a second scene: run takes one" : "unknown option");
-  }
+  const bool proceed = read_scene_arguments(args, run_help, a, [&](Arguments &args) {
+    return args.is_flag("--check") ? (check_only = true) : false;
+  });
+  if (!proceed) return exit_converged;
+  const std::vector<Override> &overrides = a.overrides;
+  const std::string &scene_path = a.scene_path;
 
   if (check_only) {
     Session session = open_session(scene_path, overrides, false);

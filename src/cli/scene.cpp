@@ -78,16 +78,22 @@ void apply_override(toml::table &document, const Override &override) {
 
 // ---- the tables -----------------------------------------------------------------------------
 
-GridSpec read_grid(SceneTable t, bool from_file) {
-  GridSpec grid;
-  grid.unit = t.text("unit", "");
-  if (!grid.unit.empty()) {
+// A length unit ("" when absent), refused unless unit_in_metres knows it.
+std::string length_unit(SceneTable &t, const std::string &key) {
+  const std::string unit = t.text(key, "");
+  if (!unit.empty()) {
     try {
-      asp::io::unit_in_metres(grid.unit);
+      asp::io::unit_in_metres(unit);
     } catch (const std::invalid_argument &e) {
-      t.refuse("unit", e.what());
+      t.refuse(key, e.what());
     }
   }
+  return unit;
+}
+
+GridSpec read_grid(SceneTable t, bool from_file) {
+  GridSpec grid;
+  grid.unit = length_unit(t, "unit");
   if (from_file) {
     // The file gives the pixels; the scene may state them only to check them.
     grid.nx = t.integer("nx", 1, 0);
@@ -167,14 +173,7 @@ TopographySpec read_topography(SceneTable t, const std::string &directory) {
     if (path.empty()) t.refuse("path", "is empty");
     s.path = path[0] == '/' || directory.empty() ? path : directory + "/" + path;
     s.format = t.choice("format", {"auto", "text", "npy", "x3p"}, "auto");
-    s.height_unit = t.text("height_unit", "");
-    if (!s.height_unit.empty()) {
-      try {
-        asp::io::unit_in_metres(s.height_unit);
-      } catch (const std::invalid_argument &e) {
-        t.refuse("height_unit", e.what());
-      }
-    }
+    s.height_unit = length_unit(t, "height_unit");
     s.pixel_size = t.positive("pixel_size", 0.0);
     s.fill_missing = t.choice("missing", {"refuse", "interpolate"}, "refuse") == "interpolate";
   }

@@ -117,15 +117,9 @@ int run_sweep(Session &session) {
 
 int sweep_command(const std::vector<std::string> &arguments) {
   Arguments args(arguments, "asperity sweep");
-  std::vector<Override> overrides;
-  std::string scene_path;
+  SceneArguments a;
   bool sweep_given = false;
-  while (args.next()) {
-    if (args.is_flag("--help") || args.is_flag("-h")) {
-      std::printf("%s%s\n%s", sweep_help, scene_options_help, exit_status_help);
-      return exit_converged;
-    }
-    if (args.scene_option(overrides)) continue;
+  const bool proceed = read_scene_arguments(args, sweep_help, a, [&](Arguments &args) {
     const struct {
       const char *option;
       const char *key;
@@ -133,27 +127,21 @@ int sweep_command(const std::vector<std::string> &arguments) {
                          {"--from", "control.sweep.from"},
                          {"--to", "control.sweep.to"},
                          {"--steps", "control.sweep.steps"}};
-    bool matched = false;
     for (const auto &o : sweep_options) {
       if (!args.is(o.option)) continue;
       const std::string v = args.value();
-      overrides.push_back({std::string(o.key) + "=" + v, std::string(o.option) + " " + v});
+      a.overrides.push_back({std::string(o.key) + "=" + v, std::string(o.option) + " " + v});
       sweep_given = sweep_given || std::string(o.option) != "--quantity";
-      matched = true;
-      break;
+      return true;
     }
-    if (matched) continue;
-    if (args.is_flag("--no-unload")) {
-      overrides.push_back({"control.sweep.unload=false", "--no-unload"});
-      sweep_given = true;
-      continue;
-    }
-    if (args.positional() && scene_path.empty()) {
-      scene_path = args.current();
-      continue;
-    }
-    args.refuse(args.positional() ? "a second scene: sweep takes one" : "unknown option");
-  }
+    if (!args.is_flag("--no-unload")) return false;
+    a.overrides.push_back({"control.sweep.unload=false", "--no-unload"});
+    sweep_given = true;
+    return true;
+  });
+  if (!proceed) return exit_converged;
+  std::vector<Override> &overrides = a.overrides;
+  const std::string &scene_path = a.scene_path;
   // Sweep options replace the scene's single value.
   if (sweep_given) overrides.insert(overrides.begin(), Override{"control.value", "", true});
   // Checked before the session makes anything (reading a scene builds nothing).
