@@ -8,6 +8,15 @@ std::string library_message(int status, const std::string &what) {
   return what + ": " + asp_status_string(status) + " (" + asp_last_error_message() + ")";
 }
 
+std::string refusal_message() {
+  std::string message = asp_last_error_message();
+  const size_t colon = message.find(": ");
+  if (message.rfind("asp_", 0) == 0 && colon != std::string::npos &&
+      message.find_first_not_of("abcdefghijklmnopqrstuvwxyz_0123456789") == colon)
+    message.erase(0, colon + 2);
+  return message;
+}
+
 void check(int status, const std::string &what) {
   if (status != ASP_OK) throw failure(library_message(status, what));
 }
@@ -16,7 +25,7 @@ void check_given(int status, const std::string &where) {
   if (status == ASP_OK) return;
   if (status == ASP_ERR_INVALID_ARGUMENT || status == ASP_ERR_UNSUPPORTED ||
       status == ASP_ERR_SIZE_MISMATCH)
-    throw usage_error(where + ": " + asp_last_error_message());
+    throw usage_error(where + ": " + refusal_message());
   throw failure(library_message(status, where));
 }
 

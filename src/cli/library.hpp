@@ -26,6 +26,10 @@ using Solver = std::unique_ptr<asp_solver, SolverDeleter>;
 // The library's message for the last failed call, prefixed by what was being done.
 std::string library_message(int status, const std::string &what);
 
+// The library's last error message without the name of the function that set it
+// ("asp_solver_solve: "), which says nothing to a user of the command.
+std::string refusal_message();
+
 // Throws failure(...) unless status is ASP_OK: the library or the system failed.
 void check(int status, const std::string &what);
 

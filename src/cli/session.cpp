@@ -13,11 +13,7 @@ std::string refusal(asp_solver *solver, const Contact &contact, int control) {
   const int status = asp_solver_supports(solver, contact.system.get(), control);
   if (status == ASP_OK) return "";
   if (status != ASP_ERR_UNSUPPORTED) check(status, "asking what the solver serves");
-  // The library's message starts with the function's name, which says nothing to a user.
-  std::string message = asp_last_error_message();
-  const std::string prefix = "asp_solver_supports: ";
-  if (message.rfind(prefix, 0) == 0) message.erase(0, prefix.size());
-  return message;
+  return refusal_message();
 }
 
 Session open_session(const std::string &scene_path, const std::vector<Override> &overrides,
