@@ -6,7 +6,8 @@ set -euo pipefail
 # The core library needs FFTW only; the command reads scene files (toml++) and measured
 # surfaces (.x3p: libzip, pugixml) and draws its pictures with gnuplot (optional at run time).
 packages=(g++ gfortran cmake make pkg-config libfftw3-dev googletest libgtest-dev
-          libtomlplusplus-dev libzip-dev libpugixml-dev gnuplot-nox)
+          libtomlplusplus-dev libzip-dev libpugixml-dev gnuplot-nox
+          python3-numpy dpkg-dev abigail-tools doxygen)
 
 missing=()
 for p in "${packages[@]}"; do
