@@ -1,36 +1,48 @@
+! SPDX-License-Identifier: GPL-2.0-or-later
 ! Fortran 2003 interface to asperity, through ISO_C_BINDING.
 !
-! Every constant and every function of include/asperity/asperity.h has a counterpart of the
-! same name here (the test fortran.mirrors_header checks it). In the interfaces, handles are
-! type(c_ptr), counts integer(c_int64_t), reals real(c_double), flags and statuses
-! integer(c_int), callbacks type(c_funptr) (pass a bind(c) procedure with c_funloc) and their
-! user data type(c_ptr) (c_loc of a variable with the target attribute, or c_null_ptr).
-! Arrays are passed as ordinary Fortran arrays: a field h(nx, ny) is exactly the C layout
-! (x fastest). Output arguments that C allows to be NULL are ordinary variables here.
+! Every constant and every function of include/asperity/asperity.h has a public counterpart of
+! the same name here (the test fortran.mirrors_header checks it): constants are integer(c_int)
+! parameters; each function is either its bind(c) interface itself or a generic interface of
+! that name which holds the bind(c) interface together with the module's own variants.
 !
-! Strings going in must end in c_null_char ('pk'//c_null_char). Text coming back is either a
-! C pointer, which asp_string() turns into a Fortran string, or is written into a buffer:
-! a character variable (or c_char array) with its size, the length of the whole text coming
-! back in length, as the header's asp_algorithms describes:
+! Kinds. Handles are type(c_ptr); reals are real(c_double) only (a default real, single
+! precision on every common compiler, is refused at compile time rather than widened
+! silently); flags, keys and statuses are integer(c_int); callbacks are type(c_funptr) (pass a
+! bind(c) procedure with c_funloc) and their user data type(c_ptr) (c_loc of a variable with
+! the target attribute, or c_null_ptr). Integer inputs that are counts, sizes, seeds or
+! periods are integer(c_int64_t) in C; the generic interfaces take them as default integers
+! (integer(c_int)) as well, all the integer inputs of one call of one kind:
+!
+!   status = asp_grid_create_2d(256, 256, 1d0, 1d0, grid)
+!   status = asp_topography_self_affine(grid, 0.8d0, 1d0, 0.25d0, 1d0/64, ASP_RMS_SLOPE, &
+!                                       0.1d0, 42, h, size(h))
+!   status = asp_solver_set_max_iterations(solver, 100)
+! Integer outputs (asp_grid_get_shape, asp_solver_iterations, ..., the length of a text) stay
+! integer(c_int64_t), which no count overflows.
+!
+! Arrays are ordinary Fortran arrays, of rank 1 or 2: a field h(nx, ny) is exactly the C
+! layout (x fastest) and goes to C without a copy when it is contiguous (a non-contiguous
+! section is copied in and out by the compiler).
+!
+! Strings going in are plain Fortran strings: trailing blanks are dropped and the NUL is
+! added by the module, so asp_solver_create('pk', solver) works, and so does a blank-padded
+! character variable. A string that already holds a c_null_char is cut after it and passed
+! on as it is ('pk'//c_null_char still works). Text coming back is either a C pointer, which
+! asp_string() turns into a Fortran string, or is written into a character variable with
+! its size, the length of the whole text coming back in length (integer(c_int64_t)), as the
+! header's asp_algorithms describes:
 !
 !   character(len=64) :: names
 !   integer(c_int64_t) :: length
-!   status = asp_algorithms(names, len(names, c_int64_t), length)   ! names(1:length)
+!   status = asp_algorithms(names, len(names), length)   ! names(1:length)
 !
-! Helpers that spare the NUL and the buffer, not part of the C interface:
-!   names ending in _f    take Fortran strings (trailing blanks are dropped, the NUL is
-!                         added) and return the status of the C function of the same name
-!                         without _f: asp_solver_create_f(algorithm, solver),
-!                         asp_solver_set_option_f(solver, name, value),
-!                         asp_solver_set_option_string_f(solver, name, value),
-!                         asp_solver_get_option_f(solver, name, value),
-!                         asp_fft_export_wisdom_f(path), asp_fft_import_wisdom_f(path);
-!   names ending in _text return the text as an allocatable character, and take an optional
-!                         status argument when the C call can fail ('' is returned then):
-!                         asp_status_text(status), asp_last_error_text(),
-!                         asp_version_text(), asp_algorithms_text([status]),
-!                         asp_solver_describe_text(solver [, status]),
-!                         asp_solver_get_option_string_text(solver, name [, status]).
+! Helpers that spare the buffer, not part of the C interface: names ending in _text return
+! the text as an allocatable character, and take an optional status argument when the C
+! call can fail ('' is returned then): asp_status_text(status), asp_last_error_text(),
+! asp_version_text(), asp_algorithms_text([status]), asp_solver_describe_text(solver
+! [, status]), asp_solver_get_option_string_text(solver, name [, status]).
+!
 ! The progress callback's signature is the abstract interface asp_progress_fn:
 !
 !   function on_progress(iteration, seconds, error, user_data) result(stop) bind(c)
@@ -57,7 +69,7 @@
 !       ...
 !     end if
 !   end function
-!   status = asp_system_set_potential(system, c_funloc(my_potential), c_null_ptr, 0_c_int)
+!   status = asp_system_set_potential(system, c_funloc(my_potential), c_null_ptr, 0)
 module asperity
   use, intrinsic :: iso_c_binding, only: c_int, c_int64_t, c_double, c_ptr, c_funptr, c_char, &
                                          c_null_char, c_associated, c_f_pointer
@@ -125,8 +137,6 @@ module asperity
   public :: asp_string
   public :: asp_status_text, asp_last_error_text, asp_version_text, asp_algorithms_text, &
             asp_solver_describe_text, asp_solver_get_option_string_text
-  public :: asp_solver_create_f, asp_solver_set_option_f, asp_solver_set_option_string_f, &
-            asp_solver_get_option_f, asp_fft_export_wisdom_f, asp_fft_import_wisdom_f
 
   ! The progress callback: called once per iteration with the iteration number (0 is the
   ! starting point), the seconds since the solve started and the error; return 0 to go on,
@@ -176,20 +186,6 @@ module asperity
     end function
 
     ! ---- grid ----
-    function asp_grid_create_1d(nx, lx, out) bind(c, name='asp_grid_create_1d')
-      import :: c_int, c_int64_t, c_double, c_ptr
-      integer(c_int64_t), value :: nx
-      real(c_double), value :: lx
-      type(c_ptr), intent(out) :: out
-      integer(c_int) :: asp_grid_create_1d
-    end function
-    function asp_grid_create_2d(nx, ny, lx, ly, out) bind(c, name='asp_grid_create_2d')
-      import :: c_int, c_int64_t, c_double, c_ptr
-      integer(c_int64_t), value :: nx, ny
-      real(c_double), value :: lx, ly
-      type(c_ptr), intent(out) :: out
-      integer(c_int) :: asp_grid_create_2d
-    end function
     subroutine asp_grid_destroy(grid) bind(c, name='asp_grid_destroy')
       import :: c_ptr
       type(c_ptr), value :: grid
@@ -214,102 +210,8 @@ module asperity
       integer(c_int), value :: planning
       integer(c_int) :: asp_grid_set_fft_planning
     end function
-    function asp_fft_export_wisdom(path) bind(c, name='asp_fft_export_wisdom')
-      import :: c_int, c_char
-      character(kind=c_char), intent(in) :: path(*)
-      integer(c_int) :: asp_fft_export_wisdom
-    end function
-    function asp_fft_import_wisdom(path) bind(c, name='asp_fft_import_wisdom')
-      import :: c_int, c_char
-      character(kind=c_char), intent(in) :: path(*)
-      integer(c_int) :: asp_fft_import_wisdom
-    end function
 
     ! ---- topographies ----
-    function asp_topography_flat(grid, heights, n) bind(c, name='asp_topography_flat')
-      import :: c_int, c_int64_t, c_double, c_ptr
-      type(c_ptr), value :: grid
-      real(c_double), intent(out) :: heights(*)
-      integer(c_int64_t), value :: n
-      integer(c_int) :: asp_topography_flat
-    end function
-    function asp_topography_sphere(grid, radius, heights, n) &
-        bind(c, name='asp_topography_sphere')
-      import :: c_int, c_int64_t, c_double, c_ptr
-      type(c_ptr), value :: grid
-      real(c_double), value :: radius
-      real(c_double), intent(out) :: heights(*)
-      integer(c_int64_t), value :: n
-      integer(c_int) :: asp_topography_sphere
-    end function
-    function asp_topography_paraboloid(grid, radius, heights, n) &
-        bind(c, name='asp_topography_paraboloid')
-      import :: c_int, c_int64_t, c_double, c_ptr
-      type(c_ptr), value :: grid
-      real(c_double), value :: radius
-      real(c_double), intent(out) :: heights(*)
-      integer(c_int64_t), value :: n
-      integer(c_int) :: asp_topography_paraboloid
-    end function
-    function asp_topography_sinusoid(grid, amplitude, periods_x, periods_y, heights, n) &
-        bind(c, name='asp_topography_sinusoid')
-      import :: c_int, c_int64_t, c_double, c_ptr
-      type(c_ptr), value :: grid
-      real(c_double), value :: amplitude
-      integer(c_int64_t), value :: periods_x, periods_y
-      real(c_double), intent(out) :: heights(*)
-      integer(c_int64_t), value :: n
-      integer(c_int) :: asp_topography_sinusoid
-    end function
-    function asp_topography_double_sinewave(grid, amplitude, ripple_amplitude, ripple_periods, &
-        heights, n) bind(c, name='asp_topography_double_sinewave')
-      import :: c_int, c_int64_t, c_double, c_ptr
-      type(c_ptr), value :: grid
-      real(c_double), value :: amplitude, ripple_amplitude
-      integer(c_int64_t), value :: ripple_periods
-      real(c_double), intent(out) :: heights(*)
-      integer(c_int64_t), value :: n
-      integer(c_int) :: asp_topography_double_sinewave
-    end function
-    function asp_topography_self_affine(grid, hurst, long_cutoff, rolloff, short_cutoff, &
-        normalise, target, seed, heights, n) bind(c, name='asp_topography_self_affine')
-      import :: c_int, c_int64_t, c_double, c_ptr
-      type(c_ptr), value :: grid
-      real(c_double), value :: hurst, long_cutoff, rolloff, short_cutoff
-      integer(c_int), value :: normalise
-      real(c_double), value :: target
-      integer(c_int64_t), value :: seed
-      real(c_double), intent(out) :: heights(*)
-      integer(c_int64_t), value :: n
-      integer(c_int) :: asp_topography_self_affine
-    end function
-    function asp_topography_detrend(grid, mode, heights, n) &
-        bind(c, name='asp_topography_detrend')
-      import :: c_int, c_int64_t, c_double, c_ptr
-      type(c_ptr), value :: grid
-      integer(c_int), value :: mode
-      real(c_double), intent(inout) :: heights(*)
-      integer(c_int64_t), value :: n
-      integer(c_int) :: asp_topography_detrend
-    end function
-    function asp_topography_statistics(grid, heights, n, rms_height, rms_slope, rms_curvature) &
-        bind(c, name='asp_topography_statistics')
-      import :: c_int, c_int64_t, c_double, c_ptr
-      type(c_ptr), value :: grid
-      real(c_double), intent(in) :: heights(*)
-      integer(c_int64_t), value :: n
-      real(c_double), intent(out) :: rms_height, rms_slope, rms_curvature
-      integer(c_int) :: asp_topography_statistics
-    end function
-    function asp_topography_power_spectrum(grid, heights, n, n_bins, q, c) &
-        bind(c, name='asp_topography_power_spectrum')
-      import :: c_int, c_int64_t, c_double, c_ptr
-      type(c_ptr), value :: grid
-      real(c_double), intent(in) :: heights(*)
-      integer(c_int64_t), value :: n, n_bins
-      real(c_double), intent(out) :: q(*), c(*)
-      integer(c_int) :: asp_topography_power_spectrum
-    end function
 
     ! ---- system ----
     function asp_system_create(grid, contact_modulus, out) bind(c, name='asp_system_create')
@@ -331,14 +233,6 @@ module asperity
       import :: c_ptr
       type(c_ptr), value :: system
     end subroutine
-    function asp_system_set_topography(system, heights, n) &
-        bind(c, name='asp_system_set_topography')
-      import :: c_int, c_int64_t, c_double, c_ptr
-      type(c_ptr), value :: system
-      real(c_double), intent(in) :: heights(*)
-      integer(c_int64_t), value :: n
-      integer(c_int) :: asp_system_set_topography
-    end function
     function asp_system_set_k0(system, k0) bind(c, name='asp_system_set_k0')
       import :: c_int, c_double, c_ptr
       type(c_ptr), value :: system
@@ -400,87 +294,19 @@ module asperity
       real(c_double), intent(out) :: value
       integer(c_int) :: asp_system_get
     end function
-    function asp_system_get_field(system, field, values, n) bind(c, name='asp_system_get_field')
-      import :: c_int, c_int64_t, c_double, c_ptr
-      type(c_ptr), value :: system
-      integer(c_int), value :: field
-      real(c_double), intent(out) :: values(*)
-      integer(c_int64_t), value :: n
-      integer(c_int) :: asp_system_get_field
-    end function
 
     ! ---- algorithms ----
-    function asp_algorithms(buffer, size, length) bind(c, name='asp_algorithms')
-      import :: c_int, c_int64_t, c_char
-      character(kind=c_char), intent(out) :: buffer(*)
-      integer(c_int64_t), value :: size
-      integer(c_int64_t), intent(out) :: length
-      integer(c_int) :: asp_algorithms
-    end function
 
     ! ---- solver ----
-    function asp_solver_create(algorithm, out) bind(c, name='asp_solver_create')
-      import :: c_int, c_char, c_ptr
-      character(kind=c_char), intent(in) :: algorithm(*)
-      type(c_ptr), intent(out) :: out
-      integer(c_int) :: asp_solver_create
-    end function
     subroutine asp_solver_destroy(solver) bind(c, name='asp_solver_destroy')
       import :: c_ptr
       type(c_ptr), value :: solver
     end subroutine
-    function asp_solver_describe(solver, buffer, size, length) &
-        bind(c, name='asp_solver_describe')
-      import :: c_int, c_int64_t, c_char, c_ptr
-      type(c_ptr), value :: solver
-      character(kind=c_char), intent(out) :: buffer(*)
-      integer(c_int64_t), value :: size
-      integer(c_int64_t), intent(out) :: length
-      integer(c_int) :: asp_solver_describe
-    end function
-    function asp_solver_set_option(solver, name, value) bind(c, name='asp_solver_set_option')
-      import :: c_int, c_double, c_char, c_ptr
-      type(c_ptr), value :: solver
-      character(kind=c_char), intent(in) :: name(*)
-      real(c_double), value :: value
-      integer(c_int) :: asp_solver_set_option
-    end function
-    function asp_solver_set_option_string(solver, name, value) &
-        bind(c, name='asp_solver_set_option_string')
-      import :: c_int, c_char, c_ptr
-      type(c_ptr), value :: solver
-      character(kind=c_char), intent(in) :: name(*), value(*)
-      integer(c_int) :: asp_solver_set_option_string
-    end function
-    function asp_solver_get_option(solver, name, value) bind(c, name='asp_solver_get_option')
-      import :: c_int, c_double, c_char, c_ptr
-      type(c_ptr), value :: solver
-      character(kind=c_char), intent(in) :: name(*)
-      real(c_double), intent(out) :: value
-      integer(c_int) :: asp_solver_get_option
-    end function
-    function asp_solver_get_option_string(solver, name, buffer, size, length) &
-        bind(c, name='asp_solver_get_option_string')
-      import :: c_int, c_int64_t, c_char, c_ptr
-      type(c_ptr), value :: solver
-      character(kind=c_char), intent(in) :: name(*)
-      character(kind=c_char), intent(out) :: buffer(*)
-      integer(c_int64_t), value :: size
-      integer(c_int64_t), intent(out) :: length
-      integer(c_int) :: asp_solver_get_option_string
-    end function
     function asp_solver_set_tolerance(solver, tolerance) bind(c, name='asp_solver_set_tolerance')
       import :: c_int, c_double, c_ptr
       type(c_ptr), value :: solver
       real(c_double), value :: tolerance
       integer(c_int) :: asp_solver_set_tolerance
-    end function
-    function asp_solver_set_max_iterations(solver, max_iterations) &
-        bind(c, name='asp_solver_set_max_iterations')
-      import :: c_int, c_int64_t, c_ptr
-      type(c_ptr), value :: solver
-      integer(c_int64_t), value :: max_iterations
-      integer(c_int) :: asp_solver_set_max_iterations
     end function
     function asp_solver_set_progress(solver, progress, user_data) &
         bind(c, name='asp_solver_set_progress')
@@ -558,15 +384,291 @@ module asperity
       integer(c_int64_t), intent(out) :: length
       integer(c_int) :: asp_solver_history_length
     end function
-    function asp_solver_get_history(solver, column, values, n) &
+  end interface
+
+  ! The functions that take strings, counts or arrays: each generic interface holds the
+  ! bind(c) interface (c_asp_..., private) and the module's variants of it.
+  interface asp_grid_create_1d
+    function c_asp_grid_create_1d(nx, lx, out) bind(c, name='asp_grid_create_1d')
+      import :: c_int, c_int64_t, c_double, c_ptr
+      integer(c_int64_t), value :: nx
+      real(c_double), value :: lx
+      type(c_ptr), intent(out) :: out
+      integer(c_int) :: c_asp_grid_create_1d
+    end function
+    module procedure grid_create_1d_int
+  end interface
+  interface asp_grid_create_2d
+    function c_asp_grid_create_2d(nx, ny, lx, ly, out) bind(c, name='asp_grid_create_2d')
+      import :: c_int, c_int64_t, c_double, c_ptr
+      integer(c_int64_t), value :: nx, ny
+      real(c_double), value :: lx, ly
+      type(c_ptr), intent(out) :: out
+      integer(c_int) :: c_asp_grid_create_2d
+    end function
+    module procedure grid_create_2d_int
+  end interface
+  interface asp_fft_export_wisdom
+    function c_asp_fft_export_wisdom(path) bind(c, name='asp_fft_export_wisdom')
+      import :: c_int, c_char
+      character(kind=c_char), intent(in) :: path(*)
+      integer(c_int) :: c_asp_fft_export_wisdom
+    end function
+    module procedure fft_export_wisdom_text
+  end interface
+  interface asp_fft_import_wisdom
+    function c_asp_fft_import_wisdom(path) bind(c, name='asp_fft_import_wisdom')
+      import :: c_int, c_char
+      character(kind=c_char), intent(in) :: path(*)
+      integer(c_int) :: c_asp_fft_import_wisdom
+    end function
+    module procedure fft_import_wisdom_text
+  end interface
+  interface asp_algorithms
+    function c_asp_algorithms(buffer, size, length) bind(c, name='asp_algorithms')
+      import :: c_int, c_int64_t, c_char
+      character(kind=c_char), intent(out) :: buffer(*)
+      integer(c_int64_t), value :: size
+      integer(c_int64_t), intent(out) :: length
+      integer(c_int) :: c_asp_algorithms
+    end function
+    module procedure algorithms_int, algorithms_i64
+  end interface
+  interface asp_solver_create
+    function c_asp_solver_create(algorithm, out) bind(c, name='asp_solver_create')
+      import :: c_int, c_char, c_ptr
+      character(kind=c_char), intent(in) :: algorithm(*)
+      type(c_ptr), intent(out) :: out
+      integer(c_int) :: c_asp_solver_create
+    end function
+    module procedure solver_create_text
+  end interface
+  interface asp_solver_describe
+    function c_asp_solver_describe(solver, buffer, size, length) &
+        bind(c, name='asp_solver_describe')
+      import :: c_int, c_int64_t, c_char, c_ptr
+      type(c_ptr), value :: solver
+      character(kind=c_char), intent(out) :: buffer(*)
+      integer(c_int64_t), value :: size
+      integer(c_int64_t), intent(out) :: length
+      integer(c_int) :: c_asp_solver_describe
+    end function
+    module procedure solver_describe_int, solver_describe_i64
+  end interface
+  interface asp_solver_set_option
+    function c_asp_solver_set_option(solver, name, value) bind(c, name='asp_solver_set_option')
+      import :: c_int, c_double, c_char, c_ptr
+      type(c_ptr), value :: solver
+      character(kind=c_char), intent(in) :: name(*)
+      real(c_double), value :: value
+      integer(c_int) :: c_asp_solver_set_option
+    end function
+    module procedure solver_set_option_real, solver_set_option_int, solver_set_option_i64
+  end interface
+  interface asp_solver_set_option_string
+    function c_asp_solver_set_option_string(solver, name, value) &
+        bind(c, name='asp_solver_set_option_string')
+      import :: c_int, c_char, c_ptr
+      type(c_ptr), value :: solver
+      character(kind=c_char), intent(in) :: name(*), value(*)
+      integer(c_int) :: c_asp_solver_set_option_string
+    end function
+    module procedure solver_set_option_string_text
+  end interface
+  interface asp_solver_get_option
+    function c_asp_solver_get_option(solver, name, value) bind(c, name='asp_solver_get_option')
+      import :: c_int, c_double, c_char, c_ptr
+      type(c_ptr), value :: solver
+      character(kind=c_char), intent(in) :: name(*)
+      real(c_double), intent(out) :: value
+      integer(c_int) :: c_asp_solver_get_option
+    end function
+    module procedure solver_get_option_text
+  end interface
+  interface asp_solver_get_option_string
+    function c_asp_solver_get_option_string(solver, name, buffer, size, length) &
+        bind(c, name='asp_solver_get_option_string')
+      import :: c_int, c_int64_t, c_char, c_ptr
+      type(c_ptr), value :: solver
+      character(kind=c_char), intent(in) :: name(*)
+      character(kind=c_char), intent(out) :: buffer(*)
+      integer(c_int64_t), value :: size
+      integer(c_int64_t), intent(out) :: length
+      integer(c_int) :: c_asp_solver_get_option_string
+    end function
+    module procedure solver_get_option_string_int, solver_get_option_string_i64
+  end interface
+  interface asp_solver_set_max_iterations
+    function c_asp_solver_set_max_iterations(solver, max_iterations) &
+        bind(c, name='asp_solver_set_max_iterations')
+      import :: c_int, c_int64_t, c_ptr
+      type(c_ptr), value :: solver
+      integer(c_int64_t), value :: max_iterations
+      integer(c_int) :: c_asp_solver_set_max_iterations
+    end function
+    module procedure solver_set_max_iterations_int
+  end interface
+  interface asp_topography_flat
+    function c_asp_topography_flat(grid, heights, n) bind(c, name='asp_topography_flat')
+      import :: c_int, c_int64_t, c_double, c_ptr
+      type(c_ptr), value :: grid
+      real(c_double), intent(out) :: heights(*)
+      integer(c_int64_t), value :: n
+      integer(c_int) :: c_asp_topography_flat
+    end function
+    module procedure topography_flat_r1_int, topography_flat_r2_int, topography_flat_r2_i64
+  end interface
+  interface asp_topography_sphere
+    function c_asp_topography_sphere(grid, radius, heights, n) &
+        bind(c, name='asp_topography_sphere')
+      import :: c_int, c_int64_t, c_double, c_ptr
+      type(c_ptr), value :: grid
+      real(c_double), value :: radius
+      real(c_double), intent(out) :: heights(*)
+      integer(c_int64_t), value :: n
+      integer(c_int) :: c_asp_topography_sphere
+    end function
+    module procedure topography_sphere_r1_int, topography_sphere_r2_int, topography_sphere_r2_i64
+  end interface
+  interface asp_topography_paraboloid
+    function c_asp_topography_paraboloid(grid, radius, heights, n) &
+        bind(c, name='asp_topography_paraboloid')
+      import :: c_int, c_int64_t, c_double, c_ptr
+      type(c_ptr), value :: grid
+      real(c_double), value :: radius
+      real(c_double), intent(out) :: heights(*)
+      integer(c_int64_t), value :: n
+      integer(c_int) :: c_asp_topography_paraboloid
+    end function
+    module procedure topography_paraboloid_r1_int, topography_paraboloid_r2_int, &
+        topography_paraboloid_r2_i64
+  end interface
+  interface asp_topography_sinusoid
+    function c_asp_topography_sinusoid(grid, amplitude, periods_x, periods_y, heights, n) &
+        bind(c, name='asp_topography_sinusoid')
+      import :: c_int, c_int64_t, c_double, c_ptr
+      type(c_ptr), value :: grid
+      real(c_double), value :: amplitude
+      integer(c_int64_t), value :: periods_x
+      integer(c_int64_t), value :: periods_y
+      real(c_double), intent(out) :: heights(*)
+      integer(c_int64_t), value :: n
+      integer(c_int) :: c_asp_topography_sinusoid
+    end function
+    module procedure topography_sinusoid_r1_int, topography_sinusoid_r2_int, &
+        topography_sinusoid_r2_i64
+  end interface
+  interface asp_topography_double_sinewave
+    function c_asp_topography_double_sinewave(grid, amplitude, ripple_amplitude, &
+        ripple_periods, heights, n) bind(c, name='asp_topography_double_sinewave')
+      import :: c_int, c_int64_t, c_double, c_ptr
+      type(c_ptr), value :: grid
+      real(c_double), value :: amplitude
+      real(c_double), value :: ripple_amplitude
+      integer(c_int64_t), value :: ripple_periods
+      real(c_double), intent(out) :: heights(*)
+      integer(c_int64_t), value :: n
+      integer(c_int) :: c_asp_topography_double_sinewave
+    end function
+    module procedure topography_double_sinewave_r1_int, topography_double_sinewave_r2_int, &
+        topography_double_sinewave_r2_i64
+  end interface
+  interface asp_topography_self_affine
+    function c_asp_topography_self_affine(grid, hurst, long_cutoff, rolloff, short_cutoff, &
+        normalise, target, seed, heights, n) bind(c, name='asp_topography_self_affine')
+      import :: c_int, c_int64_t, c_double, c_ptr
+      type(c_ptr), value :: grid
+      real(c_double), value :: hurst
+      real(c_double), value :: long_cutoff
+      real(c_double), value :: rolloff
+      real(c_double), value :: short_cutoff
+      integer(c_int), value :: normalise
+      real(c_double), value :: target
+      integer(c_int64_t), value :: seed
+      real(c_double), intent(out) :: heights(*)
+      integer(c_int64_t), value :: n
+      integer(c_int) :: c_asp_topography_self_affine
+    end function
+    module procedure topography_self_affine_r1_int, topography_self_affine_r2_int, &
+        topography_self_affine_r2_i64
+  end interface
+  interface asp_topography_statistics
+    function c_asp_topography_statistics(grid, heights, n, rms_height, rms_slope, &
+        rms_curvature) bind(c, name='asp_topography_statistics')
+      import :: c_int, c_int64_t, c_double, c_ptr
+      type(c_ptr), value :: grid
+      real(c_double), intent(in) :: heights(*)
+      integer(c_int64_t), value :: n
+      real(c_double), intent(out) :: rms_height
+      real(c_double), intent(out) :: rms_slope
+      real(c_double), intent(out) :: rms_curvature
+      integer(c_int) :: c_asp_topography_statistics
+    end function
+    module procedure topography_statistics_r1_int, topography_statistics_r2_int, &
+        topography_statistics_r2_i64
+  end interface
+  interface asp_topography_detrend
+    function c_asp_topography_detrend(grid, mode, heights, n) &
+        bind(c, name='asp_topography_detrend')
+      import :: c_int, c_int64_t, c_double, c_ptr
+      type(c_ptr), value :: grid
+      integer(c_int), value :: mode
+      real(c_double), intent(inout) :: heights(*)
+      integer(c_int64_t), value :: n
+      integer(c_int) :: c_asp_topography_detrend
+    end function
+    module procedure topography_detrend_r1_int, topography_detrend_r2_int, &
+        topography_detrend_r2_i64
+  end interface
+  interface asp_topography_power_spectrum
+    function c_asp_topography_power_spectrum(grid, heights, n, n_bins, q, c) &
+        bind(c, name='asp_topography_power_spectrum')
+      import :: c_int, c_int64_t, c_double, c_ptr
+      type(c_ptr), value :: grid
+      real(c_double), intent(in) :: heights(*)
+      integer(c_int64_t), value :: n
+      integer(c_int64_t), value :: n_bins
+      real(c_double), intent(out) :: q(*)
+      real(c_double), intent(out) :: c(*)
+      integer(c_int) :: c_asp_topography_power_spectrum
+    end function
+    module procedure topography_power_spectrum_r1_int, topography_power_spectrum_r2_int, &
+        topography_power_spectrum_r2_i64
+  end interface
+  interface asp_system_set_topography
+    function c_asp_system_set_topography(system, heights, n) &
+        bind(c, name='asp_system_set_topography')
+      import :: c_int, c_int64_t, c_double, c_ptr
+      type(c_ptr), value :: system
+      real(c_double), intent(in) :: heights(*)
+      integer(c_int64_t), value :: n
+      integer(c_int) :: c_asp_system_set_topography
+    end function
+    module procedure system_set_topography_r1_int, system_set_topography_r2_int, &
+        system_set_topography_r2_i64
+  end interface
+  interface asp_system_get_field
+    function c_asp_system_get_field(system, field, values, n) bind(c, name='asp_system_get_field')
+      import :: c_int, c_int64_t, c_double, c_ptr
+      type(c_ptr), value :: system
+      integer(c_int), value :: field
+      real(c_double), intent(out) :: values(*)
+      integer(c_int64_t), value :: n
+      integer(c_int) :: c_asp_system_get_field
+    end function
+    module procedure system_get_field_r1_int, system_get_field_r2_int, system_get_field_r2_i64
+  end interface
+  interface asp_solver_get_history
+    function c_asp_solver_get_history(solver, column, values, n) &
         bind(c, name='asp_solver_get_history')
       import :: c_int, c_int64_t, c_double, c_ptr
       type(c_ptr), value :: solver
       integer(c_int), value :: column
       real(c_double), intent(out) :: values(*)
       integer(c_int64_t), value :: n
-      integer(c_int) :: asp_solver_get_history
+      integer(c_int) :: c_asp_solver_get_history
     end function
+    module procedure solver_get_history_r1_int
   end interface
 
   interface
@@ -624,11 +726,11 @@ contains
     integer(c_int64_t) :: length, buffer_size
     integer(c_int) :: stat
     text = ''
-    stat = asp_algorithms(probe, 0_c_int64_t, length)
+    stat = c_asp_algorithms(probe, 0_c_int64_t, length)
     if (stat == ASP_OK) then
       buffer_size = length + 1
       allocate (buffer(buffer_size))
-      stat = asp_algorithms(buffer, buffer_size, length)
+      stat = c_asp_algorithms(buffer, buffer_size, length)
       if (stat == ASP_OK) text = text_of(buffer, int(length))
     end if
     if (present(status)) status = stat
@@ -644,11 +746,11 @@ contains
     integer(c_int64_t) :: length, buffer_size
     integer(c_int) :: stat
     text = ''
-    stat = asp_solver_describe(solver, probe, 0_c_int64_t, length)
+    stat = c_asp_solver_describe(solver, probe, 0_c_int64_t, length)
     if (stat == ASP_OK) then
       buffer_size = length + 1
       allocate (buffer(buffer_size))
-      stat = asp_solver_describe(solver, buffer, buffer_size, length)
+      stat = c_asp_solver_describe(solver, buffer, buffer_size, length)
       if (stat == ASP_OK) text = text_of(buffer, int(length))
     end if
     if (present(status)) status = stat
@@ -665,67 +767,540 @@ contains
     integer(c_int64_t) :: length, buffer_size
     integer(c_int) :: stat
     text = ''
-    stat = asp_solver_get_option_string(solver, c_string(name), probe, 0_c_int64_t, length)
+    stat = c_asp_solver_get_option_string(solver, c_string(name), probe, 0_c_int64_t, length)
     if (stat == ASP_OK) then
       buffer_size = length + 1
       allocate (buffer(buffer_size))
-      stat = asp_solver_get_option_string(solver, c_string(name), buffer, buffer_size, length)
+      stat = c_asp_solver_get_option_string(solver, c_string(name), buffer, buffer_size, length)
       if (stat == ASP_OK) text = text_of(buffer, int(length))
     end if
     if (present(status)) status = stat
   end function
 
-  ! ---- Fortran strings going in ----
+  ! ---- default integers and Fortran strings going in ----
 
-  function asp_solver_create_f(algorithm, solver) result(status)
-    character(len=*), intent(in) :: algorithm
-    type(c_ptr), intent(out) :: solver
+  function grid_create_1d_int(nx, lx, out) result(status)
+    integer(c_int), intent(in) :: nx
+    real(c_double), intent(in) :: lx
+    type(c_ptr), intent(out) :: out
     integer(c_int) :: status
-    status = asp_solver_create(c_string(algorithm), solver)
+    status = c_asp_grid_create_1d(int(nx, c_int64_t), lx, out)
   end function
 
-  function asp_solver_set_option_f(solver, name, value) result(status)
+  function grid_create_2d_int(nx, ny, lx, ly, out) result(status)
+    integer(c_int), intent(in) :: nx, ny
+    real(c_double), intent(in) :: lx, ly
+    type(c_ptr), intent(out) :: out
+    integer(c_int) :: status
+    status = c_asp_grid_create_2d(int(nx, c_int64_t), int(ny, c_int64_t), lx, ly, out)
+  end function
+
+  function fft_export_wisdom_text(path) result(status)
+    character(len=*), intent(in) :: path
+    integer(c_int) :: status
+    status = c_asp_fft_export_wisdom(c_string(path))
+  end function
+
+  function fft_import_wisdom_text(path) result(status)
+    character(len=*), intent(in) :: path
+    integer(c_int) :: status
+    status = c_asp_fft_import_wisdom(c_string(path))
+  end function
+
+  function algorithms_int(buffer, size, length) result(status)
+    character(len=*), intent(out) :: buffer
+    integer(c_int), intent(in) :: size
+    integer(c_int64_t), intent(out) :: length
+    integer(c_int) :: status
+    status = c_asp_algorithms(buffer, min(int(size, c_int64_t), len(buffer, c_int64_t)), length)
+  end function
+
+  function algorithms_i64(buffer, size, length) result(status)
+    character(len=*), intent(out) :: buffer
+    integer(c_int64_t), intent(in) :: size
+    integer(c_int64_t), intent(out) :: length
+    integer(c_int) :: status
+    status = c_asp_algorithms(buffer, min(size, len(buffer, c_int64_t)), length)
+  end function
+
+  function solver_create_text(algorithm, out) result(status)
+    character(len=*), intent(in) :: algorithm
+    type(c_ptr), intent(out) :: out
+    integer(c_int) :: status
+    status = c_asp_solver_create(c_string(algorithm), out)
+  end function
+
+  function solver_describe_int(solver, buffer, size, length) result(status)
+    type(c_ptr), intent(in) :: solver
+    character(len=*), intent(out) :: buffer
+    integer(c_int), intent(in) :: size
+    integer(c_int64_t), intent(out) :: length
+    integer(c_int) :: status
+    status = c_asp_solver_describe(solver, buffer, &
+                                   min(int(size, c_int64_t), len(buffer, c_int64_t)), length)
+  end function
+
+  function solver_describe_i64(solver, buffer, size, length) result(status)
+    type(c_ptr), intent(in) :: solver
+    character(len=*), intent(out) :: buffer
+    integer(c_int64_t), intent(in) :: size
+    integer(c_int64_t), intent(out) :: length
+    integer(c_int) :: status
+    status = c_asp_solver_describe(solver, buffer, min(size, len(buffer, c_int64_t)), length)
+  end function
+
+  function solver_set_option_real(solver, name, value) result(status)
     type(c_ptr), intent(in) :: solver
     character(len=*), intent(in) :: name
     real(c_double), intent(in) :: value
     integer(c_int) :: status
-    status = asp_solver_set_option(solver, c_string(name), value)
+    status = c_asp_solver_set_option(solver, c_string(name), value)
   end function
 
-  function asp_solver_set_option_string_f(solver, name, value) result(status)
+  ! Integer options given as integers: the value goes to C as the double it equals.
+  function solver_set_option_int(solver, name, value) result(status)
+    type(c_ptr), intent(in) :: solver
+    character(len=*), intent(in) :: name
+    integer(c_int), intent(in) :: value
+    integer(c_int) :: status
+    status = c_asp_solver_set_option(solver, c_string(name), real(value, c_double))
+  end function
+
+  function solver_set_option_i64(solver, name, value) result(status)
+    type(c_ptr), intent(in) :: solver
+    character(len=*), intent(in) :: name
+    integer(c_int64_t), intent(in) :: value
+    integer(c_int) :: status
+    status = c_asp_solver_set_option(solver, c_string(name), real(value, c_double))
+  end function
+
+  function solver_set_option_string_text(solver, name, value) result(status)
     type(c_ptr), intent(in) :: solver
     character(len=*), intent(in) :: name, value
     integer(c_int) :: status
-    status = asp_solver_set_option_string(solver, c_string(name), c_string(value))
+    status = c_asp_solver_set_option_string(solver, c_string(name), c_string(value))
   end function
 
-  function asp_solver_get_option_f(solver, name, value) result(status)
+  function solver_get_option_text(solver, name, value) result(status)
     type(c_ptr), intent(in) :: solver
     character(len=*), intent(in) :: name
     real(c_double), intent(out) :: value
     integer(c_int) :: status
-    status = asp_solver_get_option(solver, c_string(name), value)
+    status = c_asp_solver_get_option(solver, c_string(name), value)
   end function
 
-  function asp_fft_export_wisdom_f(path) result(status)
-    character(len=*), intent(in) :: path
+  function solver_get_option_string_int(solver, name, buffer, size, length) result(status)
+    type(c_ptr), intent(in) :: solver
+    character(len=*), intent(in) :: name
+    character(len=*), intent(out) :: buffer
+    integer(c_int), intent(in) :: size
+    integer(c_int64_t), intent(out) :: length
     integer(c_int) :: status
-    status = asp_fft_export_wisdom(c_string(path))
+    status = c_asp_solver_get_option_string(solver, c_string(name), buffer, &
+                                            min(int(size, c_int64_t), len(buffer, c_int64_t)), &
+                                            length)
   end function
 
-  function asp_fft_import_wisdom_f(path) result(status)
-    character(len=*), intent(in) :: path
+  function solver_get_option_string_i64(solver, name, buffer, size, length) result(status)
+    type(c_ptr), intent(in) :: solver
+    character(len=*), intent(in) :: name
+    character(len=*), intent(out) :: buffer
+    integer(c_int64_t), intent(in) :: size
+    integer(c_int64_t), intent(out) :: length
     integer(c_int) :: status
-    status = asp_fft_import_wisdom(c_string(path))
+    status = c_asp_solver_get_option_string(solver, c_string(name), buffer, &
+                                            min(size, len(buffer, c_int64_t)), length)
+  end function
+
+  function solver_set_max_iterations_int(solver, max_iterations) result(status)
+    type(c_ptr), intent(in) :: solver
+    integer(c_int), intent(in) :: max_iterations
+    integer(c_int) :: status
+    status = c_asp_solver_set_max_iterations(solver, int(max_iterations, c_int64_t))
+  end function
+
+  ! ---- arrays of rank 1 and 2, default-integer counts ----
+
+  function topography_flat_r1_int(grid, heights, n) result(status)
+    type(c_ptr), intent(in) :: grid
+    real(c_double), intent(out) :: heights(:)
+    integer(c_int), intent(in) :: n
+    integer(c_int) :: status
+    status = c_asp_topography_flat(grid, heights, int(n, c_int64_t))
+  end function
+
+  function topography_flat_r2_int(grid, heights, n) result(status)
+    type(c_ptr), intent(in) :: grid
+    real(c_double), intent(out) :: heights(:, :)
+    integer(c_int), intent(in) :: n
+    integer(c_int) :: status
+    status = c_asp_topography_flat(grid, heights, int(n, c_int64_t))
+  end function
+
+  function topography_flat_r2_i64(grid, heights, n) result(status)
+    type(c_ptr), intent(in) :: grid
+    real(c_double), intent(out) :: heights(:, :)
+    integer(c_int64_t), intent(in) :: n
+    integer(c_int) :: status
+    status = c_asp_topography_flat(grid, heights, n)
+  end function
+
+  function topography_sphere_r1_int(grid, radius, heights, n) result(status)
+    type(c_ptr), intent(in) :: grid
+    real(c_double), intent(in) :: radius
+    real(c_double), intent(out) :: heights(:)
+    integer(c_int), intent(in) :: n
+    integer(c_int) :: status
+    status = c_asp_topography_sphere(grid, radius, heights, int(n, c_int64_t))
+  end function
+
+  function topography_sphere_r2_int(grid, radius, heights, n) result(status)
+    type(c_ptr), intent(in) :: grid
+    real(c_double), intent(in) :: radius
+    real(c_double), intent(out) :: heights(:, :)
+    integer(c_int), intent(in) :: n
+    integer(c_int) :: status
+    status = c_asp_topography_sphere(grid, radius, heights, int(n, c_int64_t))
+  end function
+
+  function topography_sphere_r2_i64(grid, radius, heights, n) result(status)
+    type(c_ptr), intent(in) :: grid
+    real(c_double), intent(in) :: radius
+    real(c_double), intent(out) :: heights(:, :)
+    integer(c_int64_t), intent(in) :: n
+    integer(c_int) :: status
+    status = c_asp_topography_sphere(grid, radius, heights, n)
+  end function
+
+  function topography_paraboloid_r1_int(grid, radius, heights, n) result(status)
+    type(c_ptr), intent(in) :: grid
+    real(c_double), intent(in) :: radius
+    real(c_double), intent(out) :: heights(:)
+    integer(c_int), intent(in) :: n
+    integer(c_int) :: status
+    status = c_asp_topography_paraboloid(grid, radius, heights, int(n, c_int64_t))
+  end function
+
+  function topography_paraboloid_r2_int(grid, radius, heights, n) result(status)
+    type(c_ptr), intent(in) :: grid
+    real(c_double), intent(in) :: radius
+    real(c_double), intent(out) :: heights(:, :)
+    integer(c_int), intent(in) :: n
+    integer(c_int) :: status
+    status = c_asp_topography_paraboloid(grid, radius, heights, int(n, c_int64_t))
+  end function
+
+  function topography_paraboloid_r2_i64(grid, radius, heights, n) result(status)
+    type(c_ptr), intent(in) :: grid
+    real(c_double), intent(in) :: radius
+    real(c_double), intent(out) :: heights(:, :)
+    integer(c_int64_t), intent(in) :: n
+    integer(c_int) :: status
+    status = c_asp_topography_paraboloid(grid, radius, heights, n)
+  end function
+
+  function topography_sinusoid_r1_int(grid, amplitude, periods_x, periods_y, heights, &
+      n) result(status)
+    type(c_ptr), intent(in) :: grid
+    real(c_double), intent(in) :: amplitude
+    integer(c_int), intent(in) :: periods_x
+    integer(c_int), intent(in) :: periods_y
+    real(c_double), intent(out) :: heights(:)
+    integer(c_int), intent(in) :: n
+    integer(c_int) :: status
+    status = c_asp_topography_sinusoid(grid, amplitude, int(periods_x, c_int64_t), &
+        int(periods_y, c_int64_t), heights, int(n, c_int64_t))
+  end function
+
+  function topography_sinusoid_r2_int(grid, amplitude, periods_x, periods_y, heights, &
+      n) result(status)
+    type(c_ptr), intent(in) :: grid
+    real(c_double), intent(in) :: amplitude
+    integer(c_int), intent(in) :: periods_x
+    integer(c_int), intent(in) :: periods_y
+    real(c_double), intent(out) :: heights(:, :)
+    integer(c_int), intent(in) :: n
+    integer(c_int) :: status
+    status = c_asp_topography_sinusoid(grid, amplitude, int(periods_x, c_int64_t), &
+        int(periods_y, c_int64_t), heights, int(n, c_int64_t))
+  end function
+
+  function topography_sinusoid_r2_i64(grid, amplitude, periods_x, periods_y, heights, &
+      n) result(status)
+    type(c_ptr), intent(in) :: grid
+    real(c_double), intent(in) :: amplitude
+    integer(c_int64_t), intent(in) :: periods_x
+    integer(c_int64_t), intent(in) :: periods_y
+    real(c_double), intent(out) :: heights(:, :)
+    integer(c_int64_t), intent(in) :: n
+    integer(c_int) :: status
+    status = c_asp_topography_sinusoid(grid, amplitude, periods_x, periods_y, heights, n)
+  end function
+
+  function topography_double_sinewave_r1_int(grid, amplitude, ripple_amplitude, &
+      ripple_periods, heights, n) result(status)
+    type(c_ptr), intent(in) :: grid
+    real(c_double), intent(in) :: amplitude
+    real(c_double), intent(in) :: ripple_amplitude
+    integer(c_int), intent(in) :: ripple_periods
+    real(c_double), intent(out) :: heights(:)
+    integer(c_int), intent(in) :: n
+    integer(c_int) :: status
+    status = c_asp_topography_double_sinewave(grid, amplitude, ripple_amplitude, &
+        int(ripple_periods, c_int64_t), heights, int(n, c_int64_t))
+  end function
+
+  function topography_double_sinewave_r2_int(grid, amplitude, ripple_amplitude, &
+      ripple_periods, heights, n) result(status)
+    type(c_ptr), intent(in) :: grid
+    real(c_double), intent(in) :: amplitude
+    real(c_double), intent(in) :: ripple_amplitude
+    integer(c_int), intent(in) :: ripple_periods
+    real(c_double), intent(out) :: heights(:, :)
+    integer(c_int), intent(in) :: n
+    integer(c_int) :: status
+    status = c_asp_topography_double_sinewave(grid, amplitude, ripple_amplitude, &
+        int(ripple_periods, c_int64_t), heights, int(n, c_int64_t))
+  end function
+
+  function topography_double_sinewave_r2_i64(grid, amplitude, ripple_amplitude, &
+      ripple_periods, heights, n) result(status)
+    type(c_ptr), intent(in) :: grid
+    real(c_double), intent(in) :: amplitude
+    real(c_double), intent(in) :: ripple_amplitude
+    integer(c_int64_t), intent(in) :: ripple_periods
+    real(c_double), intent(out) :: heights(:, :)
+    integer(c_int64_t), intent(in) :: n
+    integer(c_int) :: status
+    status = c_asp_topography_double_sinewave(grid, amplitude, ripple_amplitude, &
+        ripple_periods, heights, n)
+  end function
+
+  function topography_self_affine_r1_int(grid, hurst, long_cutoff, rolloff, short_cutoff, &
+      normalise, target, seed, heights, n) result(status)
+    type(c_ptr), intent(in) :: grid
+    real(c_double), intent(in) :: hurst
+    real(c_double), intent(in) :: long_cutoff
+    real(c_double), intent(in) :: rolloff
+    real(c_double), intent(in) :: short_cutoff
+    integer(c_int), intent(in) :: normalise
+    real(c_double), intent(in) :: target
+    integer(c_int), intent(in) :: seed
+    real(c_double), intent(out) :: heights(:)
+    integer(c_int), intent(in) :: n
+    integer(c_int) :: status
+    status = c_asp_topography_self_affine(grid, hurst, long_cutoff, rolloff, short_cutoff, &
+        normalise, target, int(seed, c_int64_t), heights, int(n, c_int64_t))
+  end function
+
+  function topography_self_affine_r2_int(grid, hurst, long_cutoff, rolloff, short_cutoff, &
+      normalise, target, seed, heights, n) result(status)
+    type(c_ptr), intent(in) :: grid
+    real(c_double), intent(in) :: hurst
+    real(c_double), intent(in) :: long_cutoff
+    real(c_double), intent(in) :: rolloff
+    real(c_double), intent(in) :: short_cutoff
+    integer(c_int), intent(in) :: normalise
+    real(c_double), intent(in) :: target
+    integer(c_int), intent(in) :: seed
+    real(c_double), intent(out) :: heights(:, :)
+    integer(c_int), intent(in) :: n
+    integer(c_int) :: status
+    status = c_asp_topography_self_affine(grid, hurst, long_cutoff, rolloff, short_cutoff, &
+        normalise, target, int(seed, c_int64_t), heights, int(n, c_int64_t))
+  end function
+
+  function topography_self_affine_r2_i64(grid, hurst, long_cutoff, rolloff, short_cutoff, &
+      normalise, target, seed, heights, n) result(status)
+    type(c_ptr), intent(in) :: grid
+    real(c_double), intent(in) :: hurst
+    real(c_double), intent(in) :: long_cutoff
+    real(c_double), intent(in) :: rolloff
+    real(c_double), intent(in) :: short_cutoff
+    integer(c_int), intent(in) :: normalise
+    real(c_double), intent(in) :: target
+    integer(c_int64_t), intent(in) :: seed
+    real(c_double), intent(out) :: heights(:, :)
+    integer(c_int64_t), intent(in) :: n
+    integer(c_int) :: status
+    status = c_asp_topography_self_affine(grid, hurst, long_cutoff, rolloff, short_cutoff, &
+        normalise, target, seed, heights, n)
+  end function
+
+  function topography_statistics_r1_int(grid, heights, n, rms_height, rms_slope, &
+      rms_curvature) result(status)
+    type(c_ptr), intent(in) :: grid
+    real(c_double), intent(in) :: heights(:)
+    integer(c_int), intent(in) :: n
+    real(c_double), intent(out) :: rms_height
+    real(c_double), intent(out) :: rms_slope
+    real(c_double), intent(out) :: rms_curvature
+    integer(c_int) :: status
+    status = c_asp_topography_statistics(grid, heights, int(n, c_int64_t), rms_height, &
+        rms_slope, rms_curvature)
+  end function
+
+  function topography_statistics_r2_int(grid, heights, n, rms_height, rms_slope, &
+      rms_curvature) result(status)
+    type(c_ptr), intent(in) :: grid
+    real(c_double), intent(in) :: heights(:, :)
+    integer(c_int), intent(in) :: n
+    real(c_double), intent(out) :: rms_height
+    real(c_double), intent(out) :: rms_slope
+    real(c_double), intent(out) :: rms_curvature
+    integer(c_int) :: status
+    status = c_asp_topography_statistics(grid, heights, int(n, c_int64_t), rms_height, &
+        rms_slope, rms_curvature)
+  end function
+
+  function topography_statistics_r2_i64(grid, heights, n, rms_height, rms_slope, &
+      rms_curvature) result(status)
+    type(c_ptr), intent(in) :: grid
+    real(c_double), intent(in) :: heights(:, :)
+    integer(c_int64_t), intent(in) :: n
+    real(c_double), intent(out) :: rms_height
+    real(c_double), intent(out) :: rms_slope
+    real(c_double), intent(out) :: rms_curvature
+    integer(c_int) :: status
+    status = c_asp_topography_statistics(grid, heights, n, rms_height, rms_slope, rms_curvature)
+  end function
+
+  function topography_detrend_r1_int(grid, mode, heights, n) result(status)
+    type(c_ptr), intent(in) :: grid
+    integer(c_int), intent(in) :: mode
+    real(c_double), intent(inout) :: heights(:)
+    integer(c_int), intent(in) :: n
+    integer(c_int) :: status
+    status = c_asp_topography_detrend(grid, mode, heights, int(n, c_int64_t))
+  end function
+
+  function topography_detrend_r2_int(grid, mode, heights, n) result(status)
+    type(c_ptr), intent(in) :: grid
+    integer(c_int), intent(in) :: mode
+    real(c_double), intent(inout) :: heights(:, :)
+    integer(c_int), intent(in) :: n
+    integer(c_int) :: status
+    status = c_asp_topography_detrend(grid, mode, heights, int(n, c_int64_t))
+  end function
+
+  function topography_detrend_r2_i64(grid, mode, heights, n) result(status)
+    type(c_ptr), intent(in) :: grid
+    integer(c_int), intent(in) :: mode
+    real(c_double), intent(inout) :: heights(:, :)
+    integer(c_int64_t), intent(in) :: n
+    integer(c_int) :: status
+    status = c_asp_topography_detrend(grid, mode, heights, n)
+  end function
+
+  function topography_power_spectrum_r1_int(grid, heights, n, n_bins, q, c) result(status)
+    type(c_ptr), intent(in) :: grid
+    real(c_double), intent(in) :: heights(:)
+    integer(c_int), intent(in) :: n
+    integer(c_int), intent(in) :: n_bins
+    real(c_double), intent(out) :: q(*)
+    real(c_double), intent(out) :: c(*)
+    integer(c_int) :: status
+    status = c_asp_topography_power_spectrum(grid, heights, int(n, c_int64_t), int(n_bins, &
+        c_int64_t), q, c)
+  end function
+
+  function topography_power_spectrum_r2_int(grid, heights, n, n_bins, q, c) result(status)
+    type(c_ptr), intent(in) :: grid
+    real(c_double), intent(in) :: heights(:, :)
+    integer(c_int), intent(in) :: n
+    integer(c_int), intent(in) :: n_bins
+    real(c_double), intent(out) :: q(*)
+    real(c_double), intent(out) :: c(*)
+    integer(c_int) :: status
+    status = c_asp_topography_power_spectrum(grid, heights, int(n, c_int64_t), int(n_bins, &
+        c_int64_t), q, c)
+  end function
+
+  function topography_power_spectrum_r2_i64(grid, heights, n, n_bins, q, c) result(status)
+    type(c_ptr), intent(in) :: grid
+    real(c_double), intent(in) :: heights(:, :)
+    integer(c_int64_t), intent(in) :: n
+    integer(c_int64_t), intent(in) :: n_bins
+    real(c_double), intent(out) :: q(*)
+    real(c_double), intent(out) :: c(*)
+    integer(c_int) :: status
+    status = c_asp_topography_power_spectrum(grid, heights, n, n_bins, q, c)
+  end function
+
+  function system_set_topography_r1_int(system, heights, n) result(status)
+    type(c_ptr), intent(in) :: system
+    real(c_double), intent(in) :: heights(:)
+    integer(c_int), intent(in) :: n
+    integer(c_int) :: status
+    status = c_asp_system_set_topography(system, heights, int(n, c_int64_t))
+  end function
+
+  function system_set_topography_r2_int(system, heights, n) result(status)
+    type(c_ptr), intent(in) :: system
+    real(c_double), intent(in) :: heights(:, :)
+    integer(c_int), intent(in) :: n
+    integer(c_int) :: status
+    status = c_asp_system_set_topography(system, heights, int(n, c_int64_t))
+  end function
+
+  function system_set_topography_r2_i64(system, heights, n) result(status)
+    type(c_ptr), intent(in) :: system
+    real(c_double), intent(in) :: heights(:, :)
+    integer(c_int64_t), intent(in) :: n
+    integer(c_int) :: status
+    status = c_asp_system_set_topography(system, heights, n)
+  end function
+
+  function system_get_field_r1_int(system, field, values, n) result(status)
+    type(c_ptr), intent(in) :: system
+    integer(c_int), intent(in) :: field
+    real(c_double), intent(out) :: values(:)
+    integer(c_int), intent(in) :: n
+    integer(c_int) :: status
+    status = c_asp_system_get_field(system, field, values, int(n, c_int64_t))
+  end function
+
+  function system_get_field_r2_int(system, field, values, n) result(status)
+    type(c_ptr), intent(in) :: system
+    integer(c_int), intent(in) :: field
+    real(c_double), intent(out) :: values(:, :)
+    integer(c_int), intent(in) :: n
+    integer(c_int) :: status
+    status = c_asp_system_get_field(system, field, values, int(n, c_int64_t))
+  end function
+
+  function system_get_field_r2_i64(system, field, values, n) result(status)
+    type(c_ptr), intent(in) :: system
+    integer(c_int), intent(in) :: field
+    real(c_double), intent(out) :: values(:, :)
+    integer(c_int64_t), intent(in) :: n
+    integer(c_int) :: status
+    status = c_asp_system_get_field(system, field, values, n)
+  end function
+
+  function solver_get_history_r1_int(solver, column, values, n) result(status)
+    type(c_ptr), intent(in) :: solver
+    integer(c_int), intent(in) :: column
+    real(c_double), intent(out) :: values(:)
+    integer(c_int), intent(in) :: n
+    integer(c_int) :: status
+    status = c_asp_solver_get_history(solver, column, values, int(n, c_int64_t))
   end function
 
   ! ---- private ----
 
-  ! text without its trailing blanks, NUL-terminated for C.
+  ! text for C: up to its first NUL if it has one, else without its trailing blanks and with
+  ! a NUL added.
   function c_string(text) result(chars)
     character(len=*), intent(in) :: text
-    character(kind=c_char, len=len_trim(text) + 1) :: chars
-    chars = trim(text)//c_null_char
+    character(kind=c_char, len=:), allocatable :: chars
+    integer :: nul
+    nul = index(text, c_null_char)
+    if (nul > 0) then
+      chars = text(1:nul)
+    else
+      chars = trim(text)//c_null_char
+    end if
   end function
 
   ! The first length characters of a C character array as a Fortran string.

@@ -1,8 +1,10 @@
 # Checks that the Fortran module mirrors the C header: every integer constant of the header
 # (#define ASP_... and enumerators named ASP_...) is a public integer(c_int) parameter of the
-# module with the same value, every ASP_EXPORT function has a bind(c, name='...') interface
-# whose Fortran name is the C name and is public, and the module has no ASP_ constant or
-# asp_ binding that the header lacks.
+# module with the same value; every ASP_EXPORT function has a bind(c, name='...') interface,
+# and the C name is a public Fortran name that calls it: either that interface itself is named
+# like the C function, or it sits inside a generic interface block named like the C function;
+# and the module has no ASP_ constant, asp_ binding or asp_ generic interface that the header
+# lacks.
 #
 #   cmake -DHEADER=include/asperity/asperity.h -DMODULE=bindings/fortran/asperity.f90
 #         [-DDROP=NAME[,NAME...]] -P check_mirrors_header.cmake
@@ -180,11 +182,22 @@ foreach(statement IN LISTS statements)
   endif()
 endforeach()
 
-# Fortran procedure name -> C name, for every binding; the C names in f_bound.
+# C name -> Fortran procedure name of its binding (f_procedure_<C name>) and the generic
+# interface block that holds the binding, if any (f_generic_<C name>); the C names in f_bound,
+# the names of the generic interfaces in f_generics.
 set(f_bound "")
+set(f_generics "")
+set(generic "")
 foreach(statement IN LISTS statements)
+  if(statement MATCHES "^[ \t]*interface[ \t]+([a-z_][a-z0-9_]*)[ \t]*$")
+    set(generic "${CMAKE_MATCH_1}")
+    list(APPEND f_generics "${generic}")
+  elseif(statement MATCHES "^[ \t]*end[ \t]*interface")
+    set(generic "")
+  endif()
   if(statement MATCHES "(function|subroutine)[ \t]+([a-z_][a-z0-9_]*)[ \t]*\\([^)]*\\).*bind[ \t]*\\([ \t]*c[ \t]*,[ \t]*name[ \t]*=[ \t]*['\"]([^'\"]*)['\"]")
     set(f_procedure_${CMAKE_MATCH_3} ${CMAKE_MATCH_2})
+    set(f_generic_${CMAKE_MATCH_3} "${generic}")
   endif()
 endforeach()
 foreach(bind IN LISTS binds)
@@ -218,9 +231,11 @@ foreach(function IN LISTS c_functions)
       "${function} has no interface with bind(c, name='${function}') in the module\n")
   elseif(NOT DEFINED f_procedure_${function})
     string(APPEND problems "${function}: could not read the Fortran name of its interface\n")
-  elseif(NOT f_procedure_${function} STREQUAL lower)
+  elseif(NOT f_procedure_${function} STREQUAL lower AND
+         NOT f_generic_${function} STREQUAL lower)
     string(APPEND problems
-      "${function} is bound to the Fortran name ${f_procedure_${function}}, not ${lower}\n")
+      "${function} is bound to the Fortran name ${f_procedure_${function}}, which is neither "
+      "${lower} nor inside a generic interface ${lower}\n")
   elseif(NOT lower IN_LIST f_public)
     string(APPEND problems "${function} has an interface in the module but is not public\n")
   endif()
@@ -229,6 +244,13 @@ foreach(function IN LISTS f_bound)
   if(function MATCHES "^asp_" AND NOT function IN_LIST c_functions)
     string(APPEND problems
       "the module binds ${function}, which the header does not export\n")
+  endif()
+endforeach()
+string(TOLOWER "${c_functions}" c_functions_lower)
+foreach(generic IN LISTS f_generics)
+  if(generic MATCHES "^asp_" AND NOT generic IN_LIST c_functions_lower)
+    string(APPEND problems
+      "the module has a generic interface ${generic}, which the header does not export\n")
   endif()
 endforeach()
 

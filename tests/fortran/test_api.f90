@@ -3,7 +3,8 @@
 ! cancels the solve, a solve to convergence, the texts that come back in buffers, FFTW wisdom,
 ! the scalar results, a free (non-periodic) half-space, and the soft potentials (the soft wall,
 ! the Lennard-Jones wall, a potential written in Fortran as a bind(c) callback, the hard wall
-! back). Prints every failed check and exits non-zero if there was one.
+! back), and the module's generic interfaces (strings without c_null_char, default-integer
+! counts, seeds and sizes, fields of rank 1 and 2). Prints every failed check and exits non-zero if there was one.
 module api_checks
   use, intrinsic :: iso_c_binding, only: c_int, c_int64_t, c_double, c_ptr, c_f_pointer, &
                                          c_associated
@@ -130,6 +131,12 @@ program test_api
   integer(c_int) :: status, reason, converged, dimension
   real(c_double) :: value, error, scalar, lx, ly, penetration
   integer :: k, unit
+  ! For the generic interfaces: default integers, a rank-1 field, a string with its NUL.
+  integer, parameter :: m = 32
+  type(c_ptr) :: small_grid, small_system, plain_solver
+  real(c_double) :: field(m, m), line_field(m * m), q(8), c(8)
+  real(c_double) :: rms_height, rms_slope, rms_curvature
+  character(len=64) :: option_text
 
   allocate (heights(n, n), pressure(n, n))
 
@@ -174,13 +181,14 @@ program test_api
   call expect(small(1:1) == names(1:1) .and. small(2:2) == c_null_char, &
               'a buffer too small receives the text cut to size - 1 characters and a NUL')
 
-  call expect_status(asp_solver_create_f('no_such_algorithm', no_solver), ASP_ERR_UNSUPPORTED, &
-                     'asp_solver_create_f with an unknown algorithm')
+  call expect_status(asp_solver_create('no_such_algorithm', no_solver), ASP_ERR_UNSUPPORTED, &
+                     'asp_solver_create with an unknown algorithm')
   call expect(.not. c_associated(no_solver), 'a failed create sets the handle to NULL')
   call expect(index(asp_last_error_text(), 'no_such_algorithm') > 0, &
               'the message names the unknown algorithm: ' // asp_last_error_text())
   ! Trailing blanks, as a fixed-length Fortran variable has, are dropped.
-  call expect_status(asp_solver_create_f('pk  ', solver), ASP_OK, 'asp_solver_create_f')
+  call expect_status(asp_solver_create('pk  ', solver), ASP_OK, &
+                     'asp_solver_create with a blank-padded name')
 
   text = asp_solver_describe_text(solver, status)
   call expect_status(status, ASP_OK, 'asp_solver_describe_text')
@@ -192,41 +200,41 @@ program test_api
   call expect(length == len(text, c_int64_t), 'asp_solver_describe reports the length')
 
   ! ---- options by name ----
-  call expect_status(asp_solver_get_option_f(solver, 'tolerance', value), ASP_OK, &
-                     'asp_solver_get_option_f(tolerance)')
+  call expect_status(asp_solver_get_option(solver, 'tolerance', value), ASP_OK, &
+                     'asp_solver_get_option(tolerance)')
   call expect(value == 1d-8, 'the default tolerance is 1e-8')
-  call expect_status(asp_solver_set_option_f(solver, 'tolerance', tolerance), ASP_OK, &
-                     'asp_solver_set_option_f(tolerance)')
+  call expect_status(asp_solver_set_option(solver, 'tolerance', tolerance), ASP_OK, &
+                     'asp_solver_set_option(tolerance)')
   call expect_status(asp_solver_set_option(solver, 'max_iterations' // c_null_char, 500d0), &
                      ASP_OK, 'asp_solver_set_option(max_iterations)')
   padded_name = 'max_iterations'
-  call expect_status(asp_solver_get_option_f(solver, padded_name, value), ASP_OK, &
-                     'asp_solver_get_option_f with a blank-padded name')
+  call expect_status(asp_solver_get_option(solver, padded_name, value), ASP_OK, &
+                     'asp_solver_get_option with a blank-padded name')
   call expect(value == 500, 'max_iterations reads back as set')
 
-  status = asp_solver_set_option_f(solver, 'no_such_option', 1d0)
+  status = asp_solver_set_option(solver, 'no_such_option', 1d0)
   call expect_status(status, ASP_ERR_INVALID_ARGUMENT, 'an unknown option')
   call expect(index(asp_last_error_text(), 'no_such_option') > 0, &
               'the message names the unknown option: ' // asp_last_error_text())
   call expect(index(asp_last_error_text(), 'tolerance') > 0, &
               'the message lists the valid options: ' // asp_last_error_text())
-  status = asp_solver_set_option_f(solver, 'tolerance', -1d0)
+  status = asp_solver_set_option(solver, 'tolerance', -1d0)
   call expect_status(status, ASP_ERR_INVALID_ARGUMENT, 'a negative tolerance')
   call expect(index(asp_last_error_text(), 'tolerance') > 0, &
               'the message names the option out of range: ' // asp_last_error_text())
-  status = asp_solver_set_option_f(solver, 'max_iterations', 2.5d0)
+  status = asp_solver_set_option(solver, 'max_iterations', 2.5d0)
   call expect_status(status, ASP_ERR_INVALID_ARGUMENT, 'a fractional max_iterations')
   call expect(index(asp_last_error_text(), 'max_iterations') > 0, &
               'the message names the integer option: ' // asp_last_error_text())
-  status = asp_solver_set_option_string_f(solver, 'tolerance', 'tight')
+  status = asp_solver_set_option_string(solver, 'tolerance', 'tight')
   call expect_status(status, ASP_ERR_INVALID_ARGUMENT, 'a string for a numeric option')
   call expect(index(asp_last_error_text(), 'tolerance') > 0, &
               'the message names the numeric option: ' // asp_last_error_text())
   text = asp_solver_get_option_string_text(solver, 'tolerance', status)
   call expect_status(status, ASP_ERR_INVALID_ARGUMENT, 'reading a numeric option as a string')
   call expect(len(text) == 0, 'a refused text is empty')
-  call expect_status(asp_solver_get_option_f(solver, 'tolerance', value), ASP_OK, &
-                     'asp_solver_get_option_f(tolerance) after refusals')
+  call expect_status(asp_solver_get_option(solver, 'tolerance', value), ASP_OK, &
+                     'asp_solver_get_option(tolerance) after refusals')
   call expect(value == tolerance, 'refused values leave the option as it was')
 
   ! ---- before any solve there is no report ----
@@ -379,9 +387,9 @@ program test_api
                      ASP_ERR_UNSUPPORTED, '"pk" refuses adhesion')
   call expect(index(asp_last_error_text(), 'adhesive hard wall') > 0, &
               'the message names the interaction: ' // asp_last_error_text())
-  call expect_status(asp_solver_create_f('bugnicourt', adhesive_solver), ASP_OK, &
-                     'asp_solver_create_f(bugnicourt)')
-  call expect_status(asp_solver_set_option_string_f(adhesive_solver, 'variable', 'gap'), ASP_OK, &
+  call expect_status(asp_solver_create('bugnicourt', adhesive_solver), ASP_OK, &
+                     'asp_solver_create(bugnicourt)')
+  call expect_status(asp_solver_set_option_string(adhesive_solver, 'variable', 'gap'), ASP_OK, &
                      'variable = gap')
   call expect_status(asp_solver_solve(adhesive_solver, system, ASP_CONTROL_PENETRATION, value), &
                      ASP_OK, 'bugnicourt on the gap with adhesion')
@@ -400,24 +408,24 @@ program test_api
                      'asp_system_get(WORK_OF_ADHESION)')
   call expect(scalar == 0, 'no work of adhesion after setting 0')
   call asp_solver_destroy(adhesive_solver)
-  ! ---- lbfgsb: its options set through the Fortran wrappers, then a solve under penetration
+  ! ---- lbfgsb: its options set by name, then a solve under penetration
   ! control at pk's penetration, on the gap ----
-  call expect_status(asp_solver_create_f('lbfgsb', lbfgsb), ASP_OK, 'asp_solver_create_f(lbfgsb)')
-  call expect_status(asp_solver_set_option_f(lbfgsb, 'memory', 5d0), ASP_OK, &
-                     'asp_solver_set_option_f(memory)')
-  call expect_status(asp_solver_get_option_f(lbfgsb, 'memory', value), ASP_OK, &
-                     'asp_solver_get_option_f(memory)')
+  call expect_status(asp_solver_create('lbfgsb', lbfgsb), ASP_OK, 'asp_solver_create(lbfgsb)')
+  call expect_status(asp_solver_set_option(lbfgsb, 'memory', 5d0), ASP_OK, &
+                     'asp_solver_set_option(memory)')
+  call expect_status(asp_solver_get_option(lbfgsb, 'memory', value), ASP_OK, &
+                     'asp_solver_get_option(memory)')
   call expect(value == 5, 'the memory is the one set')
-  call expect_status(asp_solver_set_option_f(lbfgsb, 'memory', 0d0), ASP_ERR_INVALID_ARGUMENT, &
+  call expect_status(asp_solver_set_option(lbfgsb, 'memory', 0d0), ASP_ERR_INVALID_ARGUMENT, &
                      'a memory of 0 is refused')
   call expect(index(asp_last_error_text(), 'memory') > 0, &
               'the message names the option: ' // asp_last_error_text())
-  call expect_status(asp_solver_set_option_string_f(lbfgsb, 'variable', 'gap'), ASP_OK, &
-                     'asp_solver_set_option_string_f(variable)')
+  call expect_status(asp_solver_set_option_string(lbfgsb, 'variable', 'gap'), ASP_OK, &
+                     'asp_solver_set_option_string(variable)')
   call expect(asp_solver_get_option_string_text(lbfgsb, 'variable') == 'gap', &
               'the variable is the one set')
-  call expect_status(asp_solver_set_option_f(lbfgsb, 'tolerance', tolerance), ASP_OK, &
-                     'asp_solver_set_option_f(tolerance) for lbfgsb')
+  call expect_status(asp_solver_set_option(lbfgsb, 'tolerance', tolerance), ASP_OK, &
+                     'asp_solver_set_option(tolerance) for lbfgsb')
   call expect_status(asp_solver_solve(lbfgsb, system, ASP_CONTROL_MEAN_PRESSURE, mean_pressure), &
                      ASP_ERR_UNSUPPORTED, 'lbfgsb refuses mean-pressure control')
   call expect_status(asp_system_get(system, ASP_PENETRATION, penetration), ASP_OK, &
@@ -493,8 +501,8 @@ program test_api
   call asp_solver_destroy(soft_solver)
   ! Every unconstrained solver, by name, reaches the same mean gap on the built-in wall.
   do k = 1, size(unconstrained)
-    call expect_status(asp_solver_create_f(trim(unconstrained(k)), soft_solver), ASP_OK, &
-                       'asp_solver_create_f(' // trim(unconstrained(k)) // ')')
+    call expect_status(asp_solver_create(trim(unconstrained(k)), soft_solver), ASP_OK, &
+                       'asp_solver_create(' // trim(unconstrained(k)) // ')')
     call expect_status(asp_solver_set_tolerance(soft_solver, tolerance), ASP_OK, &
                        'asp_solver_set_tolerance(' // trim(unconstrained(k)) // ')')
     call expect_status(asp_solver_set_max_iterations(soft_solver, 200000_c_int64_t), ASP_OK, &
@@ -529,9 +537,97 @@ program test_api
   call expect_status(asp_solver_converged(solver, converged), ASP_OK, 'asp_solver_converged')
   call expect(converged == 1, 'pk converges on the hard wall again')
 
+  ! ---- the generic interfaces: strings without c_null_char, default integers, arrays of rank
+  ! 1 and 2 ----
+  ! The call that used to compile and then read past the string.
+  call expect_status(asp_solver_create('pk', plain_solver), ASP_OK, "asp_solver_create('pk')")
+  call expect(index(asp_solver_describe_text(plain_solver), 'pk') == 1, &
+              'the solver made from a plain string is pk')
+  call asp_solver_destroy(plain_solver)
+  call expect_status(asp_solver_create('pk' // c_null_char, plain_solver), ASP_OK, &
+                     'asp_solver_create with the NUL already there')
+  call expect_status(asp_solver_set_max_iterations(plain_solver, 100), ASP_OK, &
+                     'asp_solver_set_max_iterations with a default integer')
+  call expect_status(asp_solver_get_option(plain_solver, 'max_iterations', value), ASP_OK, &
+                     'asp_solver_get_option(max_iterations)')
+  call expect(value == 100, 'max_iterations set from a default integer reads back')
+  call expect_status(asp_solver_set_option(plain_solver, 'stall_window', 200), ASP_OK, &
+                     'asp_solver_set_option with a default-integer value')
+  call expect_status(asp_solver_set_option(plain_solver, 'stall_window', 300_c_int64_t), &
+                     ASP_OK, 'asp_solver_set_option with an integer(c_int64_t) value')
+  call expect_status(asp_solver_get_option(plain_solver, 'stall_window' // c_null_char, value), &
+                     ASP_OK, 'asp_solver_get_option with the NUL already there')
+  call expect(value == 300, 'stall_window set from an integer reads back')
+  call expect_status(asp_solver_set_option(plain_solver, 'stall_window', 2.5d0), &
+                     ASP_ERR_INVALID_ARGUMENT, 'a fractional stall_window')
+  call asp_solver_destroy(plain_solver)
+  call expect_status(asp_solver_create('bugnicourt', plain_solver), ASP_OK, &
+                     "asp_solver_create('bugnicourt')")
+  call expect_status(asp_solver_set_option_string(plain_solver, 'variable', 'gap   '), ASP_OK, &
+                     'asp_solver_set_option_string with a blank-padded value')
+  option_text = ''
+  status = asp_solver_get_option_string(plain_solver, 'variable', option_text, &
+                                        len(option_text), length)
+  call expect_status(status, ASP_OK, 'asp_solver_get_option_string with a default-integer size')
+  call expect(length == 3 .and. option_text(1:3) == 'gap' .and. option_text(4:4) == c_null_char, &
+              'asp_solver_get_option_string writes the value and its NUL')
+  status = asp_solver_describe(plain_solver, option_text, 4, length)
+  call expect_status(status, ASP_ERR_SIZE_MISMATCH, 'asp_solver_describe into 4 characters')
+  call expect(option_text(1:4) == 'bug' // c_null_char, 'the description is cut to 3 characters')
+  status = asp_algorithms(large, len(large), length)
+  call expect_status(status, ASP_OK, 'asp_algorithms with a default-integer size')
+  call expect(large(1:length) == names, 'asp_algorithms gives the names')
+  call asp_solver_destroy(plain_solver)
+
+  call expect_status(asp_grid_create_2d(m, m, box, box, small_grid), ASP_OK, &
+                     'asp_grid_create_2d with default integers')
+  call expect_status(asp_grid_get_shape(small_grid, dimension, nx, ny, pixels), ASP_OK, &
+                     'asp_grid_get_shape of the small grid')
+  call expect(nx == m .and. ny == m .and. pixels == m * m, 'the small grid has its shape')
+  call expect_status(asp_topography_sinusoid(small_grid, 1d-2, 2, 1, field, size(field)), &
+                     ASP_OK, 'asp_topography_sinusoid with default integers, rank 2')
+  call expect_status(asp_topography_sinusoid(small_grid, 1d-2, 2_c_int64_t, 1_c_int64_t, &
+                     line_field, int(m * m, c_int64_t)), ASP_OK, &
+                     'asp_topography_sinusoid with integer(c_int64_t), rank 1')
+  call expect(all(reshape(field, [m * m]) == line_field), &
+              'a rank-2 and a rank-1 array receive the same heights')
+  call expect_status(asp_topography_self_affine(small_grid, 0.8d0, box, box / 4, box / 8, &
+                     ASP_RMS_HEIGHT, 1d-2, 7, field, size(field)), ASP_OK, &
+                     'asp_topography_self_affine with a default-integer seed')
+  call expect_status(asp_topography_self_affine(small_grid, 0.8d0, box, box / 4, box / 8, &
+                     ASP_RMS_HEIGHT, 1d-2, 7_c_int64_t, line_field, int(m * m, c_int64_t)), &
+                     ASP_OK, 'asp_topography_self_affine with an integer(c_int64_t) seed')
+  call expect(all(reshape(field, [m * m]) == line_field), &
+              'the same seed gives the same surface through either generic variant')
+  call expect_status(asp_topography_statistics(small_grid, field, size(field), rms_height, &
+                     rms_slope, rms_curvature), ASP_OK, 'asp_topography_statistics, rank 2')
+  call expect(abs(rms_height - 1d-2) <= 1d-12, 'the rms height is the one asked for')
+  call expect_status(asp_topography_power_spectrum(small_grid, field, size(field), size(q), q, &
+                     c), ASP_OK, 'asp_topography_power_spectrum with default integers')
+  call expect(all(c >= 0) .and. any(c > 0), 'the spectrum has power')
+  call expect_status(asp_topography_detrend(small_grid, ASP_DETREND_MEAN, field, size(field)), &
+                     ASP_OK, 'asp_topography_detrend, rank 2')
+  call expect_status(asp_topography_paraboloid(small_grid, radius, field, size(field)), &
+                     ASP_OK, 'asp_topography_paraboloid, rank 2')
+  call expect_status(asp_topography_flat(small_grid, line_field, size(line_field)), ASP_OK, &
+                     'asp_topography_flat, rank 1')
+  call expect(all(line_field == 0), 'the flat surface is flat')
+  call expect_status(asp_system_create(small_grid, modulus, small_system), ASP_OK, &
+                     'asp_system_create on the small grid')
+  call expect_status(asp_system_set_topography(small_system, field, size(field)), ASP_OK, &
+                     'asp_system_set_topography, rank 2, default integer')
+  call expect_status(asp_system_set_topography(small_system, field, size(field) - 1), &
+                     ASP_ERR_SIZE_MISMATCH, 'a wrong default-integer count is refused')
+  call expect_status(asp_system_get_field(small_system, ASP_FIELD_TOPOGRAPHY, line_field, &
+                     size(line_field)), ASP_OK, 'asp_system_get_field, rank 1, default integer')
+  call expect(all(reshape(field, [m * m]) == line_field), &
+              'the topography comes back as it went in')
+  call asp_system_destroy(small_system)
+  call asp_grid_destroy(small_grid)
+
   ! ---- FFTW wisdom ----
-  call expect_status(asp_fft_export_wisdom_f(wisdom_file), ASP_OK, 'asp_fft_export_wisdom_f')
-  call expect_status(asp_fft_import_wisdom_f(wisdom_file), ASP_OK, 'asp_fft_import_wisdom_f')
+  call expect_status(asp_fft_export_wisdom(wisdom_file), ASP_OK, 'asp_fft_export_wisdom')
+  call expect_status(asp_fft_import_wisdom(wisdom_file), ASP_OK, 'asp_fft_import_wisdom')
   call expect_status(asp_fft_import_wisdom('no/such/directory/x.wisdom' // c_null_char), &
                      ASP_ERR_IO, 'asp_fft_import_wisdom of a missing file')
   call expect(index(asp_last_error_text(), 'no/such/directory/x.wisdom') > 0, &

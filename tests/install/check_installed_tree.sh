@@ -89,13 +89,43 @@ cmake --build "$work/consumer" > "$work/consumer-build.log"
 "$work/consumer/rough_contact"
 
 if [ -n "$fc" ]; then
-  echo "== Fortran example from the installed module source"
-  module_source=$(find "$prefix" -name asperity.f90 | head -n 1)
-  [ -n "$module_source" ] || { echo "the Fortran module source was not installed"; exit 1; }
+  fortran_examples=(rough_contact adhesive_sweep user_potential)
+  installed_module=$(find "$prefix" -name asperity.f90 | head -n 1)
+  [ -n "$installed_module" ] || { echo "the Fortran module source was not installed"; exit 1; }
+  # Both ways of finding it are relative to the installed files, so that a moved prefix works.
+  config_file=$(find "$prefix" -name asperityConfig.cmake | head -n 1)
+  if grep -n "$prefix" "$config_file" "$pc_file"; then
+    echo "the installed asperityConfig.cmake or asperity.pc holds the absolute prefix"; exit 1
+  fi
+
+  echo "== Fortran examples with find_package(asperity) and asperity_FORTRAN_SOURCE"
+  cmake -S "$source/tests/install/consumer_fortran" -B "$work/consumer_fortran" \
+    -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_Fortran_COMPILER="$fc" \
+    -DEXAMPLES_DIR="$source/examples/fortran" > "$work/consumer-fortran-configure.log"
+  grep "asperity_FORTRAN_SOURCE: $prefix/" "$work/consumer-fortran-configure.log" ||
+    { echo "asperity_FORTRAN_SOURCE is not in the installed tree"; exit 1; }
+  cmake --build "$work/consumer_fortran" > "$work/consumer-fortran-build.log"
+  for example in "${fortran_examples[@]}"; do
+    "$work/consumer_fortran/$example" > "$work/consumer-fortran-$example.log" ||
+      { cat "$work/consumer-fortran-$example.log"; echo "$example failed"; exit 1; }
+    echo "$example OK"
+  done
+
+  echo "== Fortran examples with pkg-config's fortran_source"
+  module_source=$(pkg-config --variable=fortran_source asperity)
+  [ -f "$module_source" ] ||
+    { echo "pkg-config's fortran_source '$module_source' is not a file"; exit 1; }
+  [ "$(realpath "$module_source")" = "$(realpath "$installed_module")" ] ||
+    { echo "pkg-config's fortran_source '$module_source' is not the installed module"; exit 1; }
   mkdir -p "$work/fortran"
   (cd "$work/fortran" &&
-    "$fc" -std=f2008 -Wall -Werror "$module_source" "$source/examples/fortran/rough_contact.f90" \
-      -L"$libdir" -lasperity "$rpath_flag" -o rough_contact_fortran &&
-    ./rough_contact_fortran)
+    "$fc" -std=f2008 -Wall -Werror -c "$module_source" &&
+    for example in "${fortran_examples[@]}"; do
+      "$fc" -std=f2008 -Wall -Werror "$source/examples/fortran/$example.f90" asperity.o \
+        $(pkg-config --libs asperity) "$rpath_flag" -o "$example" &&
+      ./"$example" > "$example.log" ||
+        { cat "$example.log"; echo "$example failed"; exit 1; }
+      echo "$example OK"
+    done)
 fi
 echo "installed tree OK"
