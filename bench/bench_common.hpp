@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // What the benchmark programs share: wall-clock time, and the FFT pair that a solver's time per
 // iteration is compared with.
 #pragma once

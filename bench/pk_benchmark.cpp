@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Benchmark of a solver (Polonsky-Keer by default) on 2D rough scenes (not a test), on the
 // periodic half-space or, with --free, on the free one (whose transforms are of the grid
 // zero-padded to 2N x 2N).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The thesis's comparisons of the unconstrained solvers on soft walls (not a test): its
 // Table 4 scene (thesis section 4.2.3, Figs. 23 and 25), the same with a hundred times the
 // interaction range (section 4.2.4.2, Figs. 26 and 27), and a 2D adhesive rough scene.

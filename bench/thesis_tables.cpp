@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The thesis's comparisons of the constrained solvers (not a test): its Table 2 scene at about
 // 10 % and above 90 % contact (thesis Figs. 15 and 19), and its Table 3 scene, Bugnicourt et
 // al.'s strongly adhesive benchmark (thesis Figs. 21 and 22).

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Installed programs find the shared library through an RPATH relative to their own location
 # ($ORIGIN/../lib, $ORIGIN/../lib64, $ORIGIN/../lib/x86_64-linux-gnu, ... as GNUInstallDirs
 # says), so an installed tree starts from any prefix and still does after it is moved. No RPATH

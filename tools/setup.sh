@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Installs the Debian packages asperity needs to build and test, if any are missing.
 # Needs root (or sudo) only when something has to be installed.
 set -euo pipefail

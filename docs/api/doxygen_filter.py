@@ -25,6 +25,9 @@ def filtered(lines):
             out[i] = trailing.group(1) + "/**< " + trailing.group(2)
             i += 1
             continue
+        if "SPDX-License-Identifier" in line:
+            i += 1
+            continue
         if line.startswith("/*") and not line.startswith("/* ===="):
             end = i
             while "*/" not in out[end]:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Presses a self-affine rough surface onto an elastic half-space and prints the contact.
  * Build against an installed asperity with
  *   cc -std=c99 rough_contact.c $(pkg-config --cflags --libs asperity) -o rough_contact */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Which solver is fastest on my scene? An adhesive rough surface against a soft wall, solved
  * by every unconstrained solver with its history recorded, and for each the time and the
  * iterations it took to bring the error (the largest force-balance residual over the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /*
  * asperity: normal contact between a linear-elastic half-space and a rigid rough surface,
  * solved with FFT-based boundary elements.

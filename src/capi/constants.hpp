@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The families of public constants (planning, normalisations, scalar keys, fields, controls,
 // history columns, termination reasons, detrending modes) and the one check every entry point uses: a value is
 // accepted only where its own family is expected, and a value of another family is named as

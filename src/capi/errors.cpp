@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Status strings, the thread-local error message and the version queries.
 #include <string>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The exception firewall of the C API: every entry point runs its body through guarded(),
 // which turns any C++ exception into a status code and a thread-local message naming the
 // function. Nothing escapes into C.

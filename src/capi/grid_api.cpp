@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // asp_grid_*: creation, queries and FFT planning of grids.
 #include "capi/constants.hpp"
 #include "capi/firewall.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // What the opaque C handles hold. The C API never exposes these types.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // asp_algorithms and asp_solver_*: algorithms, their options, solves, reports and histories.
 #include <string>
 

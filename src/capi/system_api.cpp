@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // asp_system_*: a contact problem, its parameters and its current state.
 #include <algorithm>
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Copying the library's texts into a caller's buffer, the same way for every call that
 // returns one (see asp_algorithms in the public header).
 #pragma once

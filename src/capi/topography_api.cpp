@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // asp_topography_*: surface generators and statistics, filling the caller's arrays.
 #include "capi/constants.hpp"
 #include "capi/firewall.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Reading a command's arguments: options with a value after '=' or as the next argument, and
 // positional arguments. Refusals name the argument and end with a pointer to --help.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The asperity command's subcommands. Each takes its arguments (after the subcommand's name),
 // prints its results on standard output and its notes and progress on standard error, and
 // returns an exit status (exit_status.hpp); refusals and failures are thrown as CommandError.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // asperity compare [SCENE]: several solvers on one scene, each from rest to the same
 // tolerance, with error against wall time and against iteration for each, so that a user can
 // see which solver is fastest on their own scene.

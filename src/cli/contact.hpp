@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The library objects a scene describes: the surface's heights on their grid, the grid, the
 // system (substrate, topography, interaction) and configured solvers. Everything a scene asks
 // for is built and checked here, before any solve, so that a scene the library refuses is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The built-in scene: what `asperity` solves with no arguments.
 #include "scene.hpp"
 

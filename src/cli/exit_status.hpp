@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The asperity command's exit statuses, and the errors that carry one out of a command.
 #pragma once
 

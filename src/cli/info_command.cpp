@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // asperity info TOPOGRAPHY: what a measured surface (or a scene's surface) is: its size,
 // units and layout, its rms height, slope and curvature, and its power spectrum.
 #include <algorithm>

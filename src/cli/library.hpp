@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The library's handles owned by C++ objects, and its status codes turned into CommandError.
 // The command uses only the public C interface, like any other program linked to asperity.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The asperity command: scenes from TOML files (or the built-in scene) solved, compared,
 // swept and described, through the library's public C interface only, like any other program
 // linked to asperity. Each subcommand lives in its own file; this one dispatches and is the

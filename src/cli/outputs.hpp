@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The files the commands write: CSV tables (a header line whose column names carry their
 // units), fields as .npy, and the directory they go to.
 #pragma once

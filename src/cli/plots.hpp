@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Pictures as PNG, drawn by gnuplot (Debian's gnuplot-nox) when it is installed: the library
 // has no plotting dependency, and a command never fails for want of a picture; a missing or
 // failing gnuplot skips the PNG with a note. ASPERITY_GNUPLOT names another gnuplot program

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The live progress line on a terminal, and Ctrl-C: the first one cancels the solve under way
 // (through the library's progress callback), a second one quits.
 #pragma once

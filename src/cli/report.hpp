@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // What the commands print: the scene in a few lines, and the results of a solve.
 #pragma once
 

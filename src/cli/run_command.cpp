@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // asperity run [SCENE]: one solve (or the scene's sweep), its report and its files.
 #include <cstdio>
 

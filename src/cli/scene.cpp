@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The scene file's keys, their defaults and their checks (docs/command.md lists them).
 #include "scene.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // A scene: everything one solve or sweep needs, as a scene file (TOML) describes it. Reading a
 // scene checks every key and value before anything is built, so that an invalid scene is
 // refused with the file, line and key, and nothing runs half-configured; docs/command.md lists

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Reading one table of a TOML scene with its checks: every getter names the file, line and key
 // of a value it refuses, every key read is marked, and finish() refuses the keys nobody read,
 // so that a misspelt key is an error and not silently ignored.

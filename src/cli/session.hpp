@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // A scene made ready to solve: read (with the command line's overrides), its contact built,
 // its solver made and checked against the scene, and its output directory made. Everything
 // that can be refused is refused here, before any solve.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // One solve of a contact and what it reports: how it ended, its work, the contact's results
 // and (when recorded) its history, iteration by iteration.
 #pragma once

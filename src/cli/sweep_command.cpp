@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // asperity sweep [SCENE]: loading then unloading steps of the control, each warm-started from
 // the step before, so that jumps into and out of contact and the hysteresis between loading
 // and unloading show (thesis section 4.3).

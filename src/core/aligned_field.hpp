@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Fields are contiguous arrays allocated by FFTW's allocator, so that every array has the
 // alignment the FFT plans were made for and plans can be executed on any field.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Argument checks shared by the library's entry points. Each throws Error with a message that
 // names the argument, the value and the rule it broke.
 #pragma once

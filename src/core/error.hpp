@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The one exception type the library throws internally. The C API turns it into a status
 // code and a message; nothing else crosses the ABI.
 #pragma once

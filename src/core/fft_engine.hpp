@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // FFTW plans for one transform shape, executed on any pair of the library's own fields
 // (FFTW's new-array interface; every field is allocated by fftw_malloc, so all share the
 // alignment the plans were made for). Plans are never run on caller memory.

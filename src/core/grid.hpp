@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // A periodic 1D or 2D grid: sizes, box, spectral layouts and the FFT plans of its shapes.
 //
 // Grids are shared: every system made on a grid holds a reference, so that the handles of the

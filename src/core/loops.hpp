@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The element-wise loops of the library: for-each and reductions over the pixels (or spectral
 // entries) this process owns. Every kernel is a lambda handed to one of these helpers, so
 // that vectorisation, threads and a distributed grid are decided here and not in each

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // A small, fully specified random generator (xoshiro256** seeded by splitmix64) so that a seed
 // gives the same surface on every platform and standard library; std::normal_distribution
 // makes no such promise.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // How partial sums and maxima over the pixels one process owns become totals over the grid.
 // On one process that is the identity; a distributed grid makes it an all-reduce. Every
 // global sum and max goes through this class (usually via core/loops.hpp), which is what lets

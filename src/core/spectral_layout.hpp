@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // One description of a stored spectrum: for every stored entry, its wavevector magnitude |q|
 // and its Parseval weight (how many modes of the full spectrum it stands for). Every loop over
 // Fourier modes in the library goes through for_each, so that odd and even sizes, the two

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // read_height_map: the choice of reader; format names; the file helpers the readers share.
 #include <cctype>
 #include <cerrno>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Measured topographies from files, and fields written for NumPy: the readers and writers of
 // the asperity command. They live outside the core library (which keeps FFTW and the standard
 // library only) because they need libzip and pugixml; the command and the tests link them as

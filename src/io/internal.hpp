@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Internal helpers shared by the readers and writers of asperity_io (not installed, not part of
 // the interface in height_map.hpp).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // MD5 (RFC 1321), for the checksums of .x3p archives.
 #include <array>
 #include <cstdint>

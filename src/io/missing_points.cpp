@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Missing points: their description, and filling them by harmonic interpolation.
 //
 // The filled heights u solve the discrete Laplace equation on the missing points: for each

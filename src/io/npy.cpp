@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // NumPy .npy files: reading versions 1.0, 2.0 and 3.0 of the format (little- and big-endian
 // float64, float32 and signed or unsigned integers, shape (n,) or (rows, cols), C or Fortran
 // order) and writing float64 arrays.

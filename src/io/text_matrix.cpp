@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Text matrices: reading what Gwyddion, MATLAB and NumPy's savetxt write, and writing one.
 //
 // Lines starting (after blanks) with '#' or '%' are comments; "# Width: 10.000 µm",

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Length units: metres per unit and their accepted spellings.
 #include <stdexcept>
 #include <string>

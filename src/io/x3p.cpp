@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // ISO 25178-72 (.x3p) files: a zip archive with main.xml describing the axes and the matrix,
 // md5checksum.hex (the MD5 of main.xml), and the point data in bindata/ (little-endian, x
 // fastest) or inline as Record3/DataList/Datum lines.

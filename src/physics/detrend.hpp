@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Removal of a measured surface's form before it is solved: its mean, its tilt (a plane) or
 // its curvature (a quadratic surface), fitted by least squares over the pixels. A tilt left on
 // a periodic substrate becomes a ridge where the surface wraps around, and changes the contact

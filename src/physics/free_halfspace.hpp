@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The free (non-periodic) elastic half-space in 2D: pressure acts only inside the grid's box,
 // and the surface beyond it is free and unloaded, so that a measured, non-periodic topography
 // is solved without images of itself.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The interaction between the rigid surface and the substrate: an energy per unit area phi(g)
 // of the gap, with or without a hard wall g >= 0. Observables that depend on it (which pixels
 // count as in contact, the interaction energy) are asked of it.

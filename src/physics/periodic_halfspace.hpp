@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The periodic elastic half-space: p~(q) = K~(q) u~(q) with K~(q) = E*|q|/2 (thesis eq. 5).
 //
 // The q = 0 mode has no stiffness in a periodic half-space; a finite K~(0) links mean pressure

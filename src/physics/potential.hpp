@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // A soft interaction potential: an energy per unit area phi(g) of the gap, defined for every
 // gap (also negative: a soft wall can be penetrated), with its slope and curvature. The
 // equilibrium pressure on the substrate is -phi'(g).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // What an elastic substrate offers the formulations: its spectral space (where the elastic
 // operator is diagonal), the transforms into it and back, the operator K and its inverse as
 // arrays over that space, and the observables that depend only on elasticity.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Statistics of a topography (thesis eqs. 52-54, after Jacobs et al. 2017), computed from the
 // spectrum so that they are exact for the band-limited surface the FFT represents.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // A contact problem on a grid: the substrate, the interaction, the rigid topography and the
 // current state. The state is kept between solves so that a load sweep warm-starts.
 #pragma once

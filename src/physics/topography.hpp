@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Generators of rigid-surface heights on a grid. Each checks its parameters and writes
 // grid.n_pixels() heights, x fastest. Pixel (i, j) sits at (i lx/nx, j ly/ny).
 #pragma once

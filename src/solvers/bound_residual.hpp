@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The error measure of DESIGN.md section 2 for a bound-constrained problem: the largest
 // residual of the optimality conditions, with the gradient in pressure units. Where the
 // unknown is above its bound the gradient must vanish (|r|); where it sits on the bound the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Bugnicourt, Sainsot, Dureisseix, Gauthier & Lubrecht's constrained conjugate gradient
 // (Tribology Letters 66:29, 2018, their OUT-LIN algorithm; thesis section 3.1.2, Alg. 4) for a
 // bound-constrained objective with an optional mean-value constraint. It needs only the

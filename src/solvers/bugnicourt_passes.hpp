@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The passes over the unknowns that Bugnicourt's algorithm (bugnicourt.cpp) makes, fused so
 // that an iteration reads and writes each array as few times as the data dependencies allow:
 //  - gather: at a new iterate, one pass learns the multiplier of the mean constraint (the

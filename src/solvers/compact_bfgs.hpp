@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The limited-memory BFGS matrix in the compact representation of Byrd, Nocedal & Schnabel
 // (Math. Program. 63, 1994), as L-BFGS-B uses it:
 //     B = theta I - W M W^T,   W = [Y, theta S],

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // What a solve holds fixed: the mean pressure (load), the penetration, or the mean gap.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 #include "solvers/displacement_formulation.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The unconstrained problem of a soft potential (soft_formulation.hpp) over the displacement
 // itself, in real space: the variable of plain L-BFGS and FIRE (thesis sections 2.2.1, 3.1.3,
 // 3.1.4). The Hessian K + phi'' is as ill-conditioned as the stiffness and the potential make

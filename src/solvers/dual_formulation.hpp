@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The dual (pressure) formulation of the non-adhesive hard-wall contact (thesis section
 // 3.1.1): minimise the complementary energy
 //     Pi(p) = (a/2) p.K^-1 p - a p.(h - max h + delta)   over p >= 0,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // FIRE, the fast inertial relaxation engine (Bitzek, Koskinen, Gahler, Moseler & Gumbsch,
 // Phys. Rev. Lett. 97, 2006; thesis section 3.1.4 and Alg. 6), with the corrections of
 // FIRE 2.0 (Guenole et al., Comput. Mater. Sci. 175, 2020): molecular dynamics of unit masses

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // A formulation is what a solver sees instead of the physics: a vector of unknowns, an
 // objective with its gradient and Hessian product, bounds, the error measure, the inner
 // product, and the way back into the system's state. Primal (gap), dual (pressure),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The unconstrained problem of a soft potential (soft_formulation.hpp) in the thesis's
 // preconditioned Fourier variables (section 4.2): the displacement's spectrum U (the
 // substrate's r2c half spectrum; 1D and 2D, odd and even sizes), scaled mode by mode so that

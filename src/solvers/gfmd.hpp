@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Damped Green's function molecular dynamics (Campana & Muser, Phys. Rev. B 74, 2006;
 // Prodanov, Dapp & Muser, Tribol. Lett. 53, 2014; thesis Alg. 5): Verlet integration of the
 // equations of motion with a damping force proportional to the velocity,

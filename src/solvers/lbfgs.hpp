@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Limited-memory BFGS (Nocedal, Math. Comp. 35, 1980; Nocedal & Wright, Numerical Optimization,
 // Algorithms 7.4 and 7.5; thesis section 3.1.6 without the bounds) for an unconstrained
 // objective: the two-loop recursion turns the gradient into a quasi-Newton direction from the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // L-BFGS-B of Byrd, Lu, Nocedal & Zhu (SIAM J. Sci. Comput. 16, 1995; thesis section 3.1.6)
 // for an objective over x >= lower bound: a limited-memory BFGS model in compact form, the
 // generalized Cauchy point along the projected steepest-descent path, minimisation of the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // A line search for the strong Wolfe conditions, after More & Thuente (ACM TOMS 20, 1994),
 // the search of MINPACK-2's dcsrch that L-BFGS-B uses. It works by reverse communication: the
 // caller evaluates phi(step) = f(x + step d) and its slope phi'(step) = g(x + step d).d at the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The local part of a separable objective f(x) = Q(x) + sum_i psi(x_i), Q quadratic: psi of
 // each unknown, offered as a value type with inline functions so that a solver fuses it into
 // its own passes without a call per unknown. The one local term that exists is exponential,

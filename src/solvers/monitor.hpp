@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The monitor watches every solve the same way, whatever the algorithm: it compares the error
 // with the tolerance, counts iterations, guards against non-finite numbers, detects stalls,
 // calls the user's progress callback, records the history when asked, and says why the solve

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The primal (gap) formulation of the hard-wall contact, with or without exponential adhesion
 // or a user's potential acting on the open gap (asp_system_set_potential with the hard wall,
 // evaluated over all pixels at once; L-BFGS-B takes it, Bugnicourt's solver does not)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The registry of algorithms: each one's name, what it serves (controls, substrates,
 // interactions), its options with defaults and ranges, and how to run it. Requests an
 // algorithm cannot serve are refused here, the same way for every algorithm, before a solve

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // What every formulation of a system holds: the system's parts it reads, the control, and the
 // dimensionless units of the solve (SceneUnits), with the parts of the Formulation interface
 // that do not depend on the unknown (size, plain inner product over pixels, energy unit,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The dimensionless units a formulation works in: pressures over the scene's reference
 // pressure P, lengths over P/k (k the stiffness of one pixel), energies over a P^2/k (a the
 // pixel area), so that a scene and the same scene in other units take the same arithmetic

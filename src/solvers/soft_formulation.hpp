@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // What the unconstrained formulations of a soft potential share (thesis section 2.2.1): the
 // objective
 //     E(u) = (1/2) u.K u + sum_i phi(g_i) + pbar sum_i u_i,   g = u - (h - max h) - delta,

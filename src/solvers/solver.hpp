@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // A solver: one algorithm of the registry, its option values, the progress callback, and the
 // report and history of its last solve.
 #pragma once

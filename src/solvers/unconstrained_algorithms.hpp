@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The registry's entries for the unconstrained solvers of soft potentials: each pairs an
 // algorithm with a formulation.
 //   lbfgs              L-BFGS on the displacement

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Checks for the C API tests: each CHECK prints file:line, the failing expression and the
  * library's last error message, and counts the failure; check_summary() prints the counts and
  * gives the program's exit status (non-zero if any check failed).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Adhesion through the public header (asp_system_set_adhesion and the ASP_ATTRACTIVE_*,
  * ASP_REPULSIVE_FORCE, ASP_INTERACTION_ENERGY, ASP_WORK_OF_ADHESION and ASP_ADHESION_RANGE
  * keys): bad arguments refused by name with nothing changed; solvers without adhesion

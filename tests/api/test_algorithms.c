@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Every algorithm of the hard wall the build lists (asp_algorithms) works through the C API as
  * the header says for all of them: it solves a small rough scene under the controls it offers
  * to the same state as every other algorithm, records its history, reports progress and can

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The public C interface, from C: every bad-input path returns its status and a message that
  * names the argument, leaves the handles usable, and the good paths give sane results.
  * Prints "N passed, N failed" and exits non-zero on any failure. */

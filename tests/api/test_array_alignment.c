@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Caller arrays at any address. A NumPy slice a[1:] or a Fortran array section starts where
  * its parent's element does, not where an allocator would start a new block, so it may lack
  * the alignment FFTW planned its transforms for (running a plan on such memory crashes).

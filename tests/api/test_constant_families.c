@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Constant families (asperity.h, "Constants"): FFT planning 1xx, normalisations 2xx, scalar
  * results 3xx, fields 4xx, controls 5xx, history columns 6xx, termination reasons 7xx, status
  * codes 0..99. Every constant lies in its family's range and no two are equal; every call that

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Regression tests, through the public header, for defects found when the library was tried
  * as a new user would, fuzzed and run on extreme scenes: warm starts that stalled, solves that
  * said "converged" with NaN or nonsense, non-finite results returned with ASP_OK, and a

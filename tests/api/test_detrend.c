@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* asp_topography_detrend through the public header: a 3 % tilt on a periodic rough surface
  * changes the contact at a given load, and removing the plane gives back the contact of the
  * surface without the tilt; bad arguments are refused by name and leave the heights as they

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Elastic energies (asperity.h, ASP_ELASTIC_ENERGY, ASP_MEAN_MODE_ENERGY, asp_system_set_k0):
  *   ASP_ELASTIC_ENERGY   = (A/2) sum over q != 0 of K~(q)|u^_q|^2, K~(q) = E*|q|/2, u^ = DFT(u)/N;
  *                          it does not depend on K~(0);

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The free (non-periodic) half-space through the public header (asp_system_create_free):
  * Hertz under penetration control, the energies it reports (ASP_ELASTIC_ENERGY the whole
  * (a/2) sum p u, ASP_MEAN_MODE_ENERGY 0), the solvers that work on it and the one that does

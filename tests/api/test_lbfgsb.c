@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* lbfgsb through the C API: its options ("memory", "variable") with their defaults, ranges
  * and refusals; the controls it refuses on each variable, with messages naming them; and a
  * solve with a small memory on either variable that converges with the pressure >= 0. */

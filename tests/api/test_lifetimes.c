@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Handle lifetimes (asperity.h, "Handles and lifetimes"): a system keeps its grid alive, so
  * handles may be destroyed in any order and a system stays fully usable after its grid's
  * handle is gone; every destroy function accepts NULL.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Soft potentials through the public header (asp_system_set_soft_wall,
  * asp_system_set_lennard_jones, asp_system_set_hard_wall, asp_system_set_potential): NULL
  * handles and callbacks, bad values refused by name with the handle still usable; the

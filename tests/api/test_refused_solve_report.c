@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The report after a refused solve (asperity.h, asp_solver_solve and the report getters):
  * "Errors (a status other than ASP_OK) mean the solve did not run ...; the system keeps the
  * state it had before the call", and the report getters return ASP_ERR_INVALID_STATE "before

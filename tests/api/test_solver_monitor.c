@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* What asperity.h promises about watching a solve: the history (off by default, one row per
  * iteration from iteration 0 when on, a new one per solve), the progress callback (once per
  * iteration, with the history's iteration and error; non-zero cancels cleanly, leaving a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Solver options through the C API, as asperity.h documents them for "pk": the common options
  * "tolerance" (real > 0, default 1e-8), "max_iterations" (integer >= 1, default 10000) and
  * "stall_window" (integer >= 0, default 1000), set and read by name; unknown names, values out

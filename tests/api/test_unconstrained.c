@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* The unconstrained solvers of soft potentials through the public header: each of "lbfgs",
  * "lbfgs_fourier", "gfmd", "fire" and "fire_mass_weighted" solves a soft wall on a small rough
  * scene, under penetration and under mean-pressure control, to the same state; a C callback

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
 /* FFTW wisdom and planning (asperity.h, asp_fft_export_wisdom, asp_fft_import_wisdom,
  * asp_grid_set_fft_planning): wisdom learnt by ASP_FFT_MEASURE planning is saved to a file and
  * loaded into another process, where it adds to what that process knows; a file that cannot

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Checks the asperity command from the outside, as a user runs it:
 #   - bad arguments and bad scenes exit with status 2 before any work, with a message on
 #     standard error naming the file, line and key (or the argument) and what is wrong, nothing

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Checks that the Fortran module mirrors the C header: every integer constant of the header
 # (#define ASP_... and enumerators named ASP_...) is a public integer(c_int) parameter of the
 # module with the same value; every ASP_EXPORT function has a bind(c, name='...') interface,

@@ -1,3 +1,4 @@
+! SPDX-License-Identifier: GPL-2.0-or-later
 ! The public interface through the Fortran module: a Hertzian sphere solved with "pk", options
 ! set by name (and refused by name), the history, a progress callback written in Fortran that
 ! cancels the solve, a solve to convergence, the texts that come back in buffers, FFTW wisdom,

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # usage: check_installed_tree.sh BUILD_DIR SOURCE_DIR WORK_DIR C_COMPILER FORTRAN_COMPILER CLI
 #   FORTRAN_COMPILER  empty when the Fortran module was not built; its part is then skipped
 #   CLI               relocatable: bin/asperity must start on its own from any prefix

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // asperity_io: reading height maps from text matrices, .npy and .x3p files written by other
 // programs (fixtures in data/, made by data/make_fixtures.py with NumPy and zipfile), writing
 // them back, refusing malformed files with a useful message, and filling missing points.

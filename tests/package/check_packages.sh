@@ -54,6 +54,7 @@ export LD_LIBRARY_PATH=$libdir
 
 echo "== C with pkg-config"
 export PKG_CONFIG_PATH=$libdir/pkgconfig
+[ "$(pkg-config --variable=license asperity)" = GPL-2.0-or-later ] || fail "the .pc file's licence"
 "$cc" -std=c99 -Wall -Werror "$source/examples/c/rough_contact.c" \
   $(pkg-config --cflags --libs asperity) -lm -o "$work/c_pkgconfig"
 "$work/c_pkgconfig" > "$work/c_pkgconfig.out"
@@ -64,6 +65,8 @@ echo "== C with find_package(asperity)"
 cmake -S "$source/tests/install/consumer" -B "$work/consumer" -DCMAKE_PREFIX_PATH="$root/usr" \
   -DEXAMPLE_SOURCE="$source/examples/c/rough_contact.c" > "$work/consumer.log"
 cmake --build "$work/consumer" >> "$work/consumer.log"
+grep -q 'asperity_LICENSE "GPL-2.0-or-later"' "$libdir/cmake/asperity/asperityConfig.cmake" ||
+  fail "the CMake package's licence"
 "$work/consumer/rough_contact" > /dev/null
 
 if [ -n "$fc" ]; then

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Small helpers to set up scenes in the internal tests.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The hard wall with exponential adhesion, phi(g) = -w exp(-g/rho): the primal formulation
 // against finite differences, the plain hard wall recovered bit for bit with w = 0, the
 // registry's refusals, the safeguarded Bugnicourt step on strong adhesion, and the closed

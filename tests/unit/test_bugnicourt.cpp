@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Bugnicourt's constrained conjugate gradient on the dual formulation: it solves the same
 // strictly convex problem as Polonsky-Keer, so both must reach the same unique solution; and
 // it must meet the Hertz closed form on its own.

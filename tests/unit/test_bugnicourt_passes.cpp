@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The fused passes of Bugnicourt's algorithm (solvers/bugnicourt_passes.hpp) against what
 // they replace: the error they gather is the formulation's error(); the curvature that the
 // Hessian product sums by Parseval is d.H d; the gradient of the adhesive primal's quadratic

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Polonsky-Keer against contact problems with closed-form solutions.
 #include <gtest/gtest.h>
 

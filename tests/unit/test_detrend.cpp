@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Detrending: a plane or a quadratic form added to a rough surface is removed to rounding
 // (1e-12 of the form's amplitude: the fit's normal equations are well conditioned in the
 // scaled coordinates, and only rounding separates the fit from the form); the mean mode

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The dual (pressure) formulation that Polonsky & Keer runs on, checked against finite
 // differences and against its own definition (dual_formulation.hpp):
 //     Pi(x) = (1/2) x.A x - x.b,   gradient A x - b = the scaled gap,

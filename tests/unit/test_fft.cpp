@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The FFT engine: round trips on every kind of size and the half-spectrum bookkeeping.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The free (non-periodic) half-space: its padded compliance against Love's coefficients summed
 // directly, Hertz and the flat punch against their closed forms, agreement with the periodic
 // half-space for a small contact in a large box, and what it refuses.

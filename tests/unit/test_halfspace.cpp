@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The periodic elastic half-space: normalisation against a single Fourier mode, inverse pair,
 // and energy and gradient against finite differences.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The core layers every solver stands on: the spectral layout (|q| and Parseval weights of
 // both packings), the element-wise loop helper, and the plan cache of a grid.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // L-BFGS-B on the dual (pressure) and primal (gap) formulations: the same unique solution as
 // Polonsky-Keer and Bugnicourt on rough scenes, the bound kept exactly, warm starts, and on
 // small quadratics whose answers are known, the generalized Cauchy point and the whole solve.

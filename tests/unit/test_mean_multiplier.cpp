@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The multiplier of a mean-value constraint, the gradient's mean over the free unknowns, must
 // be exact to the spread of the gradient, not to its size: near the optimum the gradient is
 // nearly the same large number on every free unknown, and a plain sum of many such numbers

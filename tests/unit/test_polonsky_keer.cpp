@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Polonsky-Keer: optimality conditions, agreement between controls, warm starts, reporting,
 // and stiff or extreme scenes.
 #include <gtest/gtest.h>

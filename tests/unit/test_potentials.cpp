@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The soft potentials (potential.hpp): the exponential soft wall and the Lennard-Jones 9-3
 // wall against central differences and against their closed forms (minimum, depth, largest
 // tensile stress), continuous through their continuation thresholds and finite down to

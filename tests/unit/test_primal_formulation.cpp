@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The primal (gap) formulation against its own definition: the gradient against central
 // finite differences of the value, the Hessian product against differences of the gradient,
 // its symmetry and positivity, and the error against the optimality conditions written out

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // A soft wall whose repulsion is much shorter than its attraction is the hard wall with
 // exponential adhesion in the limit (thesis section 4.3, Figs. 29 and 30): on the thesis's
 // double-sinewave scene (Table 5) a load-unload sweep of the penetration, each step warm-started

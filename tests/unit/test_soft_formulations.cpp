@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The unconstrained formulations of a soft potential: the Fourier variable describes the same
 // objective as the displacement (energies equal to 1e-10 relative: only the rounding of the
 // transforms separates them), their gradients match central finite differences, and the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Every solver of a scene finds the same state: on a free (non-periodic) rough scene pk,
 // bugnicourt and lbfgsb on the pressure and on the gap; with adhesion bugnicourt and lbfgsb on
 // the gap; and the primal and dual optima have one energy. The gap formulation on the free

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // What every solver shares: the monitor's termination reasons, history and progress, the
 // registry's refusals and descriptions, and options by name.
 #include <gtest/gtest.h>

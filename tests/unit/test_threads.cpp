@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Distinct systems may be solved from distinct threads, also when they share a grid (and so
 // its FFT plans, which are created lazily behind a lock).
 #include <gtest/gtest.h>

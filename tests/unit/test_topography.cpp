@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Topographies and their statistics.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The five unconstrained solvers of soft potentials reach the same minimum: on a smooth
 // adhesive 1D scene and on a 2D rough adhesive scene, under penetration and mean-pressure
 // control; and they refuse what they cannot serve.

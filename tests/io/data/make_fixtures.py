@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Writes the fixtures of tests/io/test_height_map_files.cpp with NumPy and the standard
 library (zipfile, hashlib), independently of asperity_io's writers. Run from anywhere:
     python3 make_fixtures.py
