@@ -7,7 +7,7 @@ import numpy as np
 from . import _constants as _c
 from . import _names
 from ._callbacks import Progress
-from ._library import lib, check, read_string
+from ._library import PROGRESS_FN, lib, check, read_string
 from .errors import Error, NullPointerError, UnsupportedError
 
 __all__ = ["Solver", "Report", "algorithms"]
@@ -146,7 +146,7 @@ class Solver:
         """
         progress = None if fn is None else Progress(fn)
         check(lib.asp_solver_set_progress(
-            self.handle, None if progress is None else progress.c_function, None),
+            self.handle, PROGRESS_FN() if progress is None else progress.c_function, None),
             "asp_solver_set_progress")
         self._progress = progress
 
