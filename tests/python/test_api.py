@@ -1,6 +1,8 @@
 """The package's API: module functions, Grid, System, Solver, errors, handles."""
 import gc
 import os
+import subprocess
+import sys
 import tempfile
 import unittest
 import weakref
@@ -70,6 +72,30 @@ class Module(unittest.TestCase):
                 asperity.import_wisdom(os.path.join(work, "missing", "wisdom"))
             self.assertIsInstance(caught.exception, OSError)
             self.assertIn("missing", str(caught.exception))
+
+
+class Loading(unittest.TestCase):
+    def _import(self, **environment):
+        env = {k: v for k, v in os.environ.items() if k != "ASPERITY_LIBRARY"}
+        env.update(environment)
+        return subprocess.run([sys.executable, "-c", "import asperity; print(asperity.library_path)"],
+                              env=env, capture_output=True, text=True)
+
+    def test_a_wrong_asperity_library_is_an_import_error_naming_it(self):
+        result = self._import(ASPERITY_LIBRARY="/nonexistent/libasperity.so.1")
+        self.assertNotEqual(result.returncode, 0)
+        self.assertIn("ImportError", result.stderr)
+        self.assertIn("ASPERITY_LIBRARY=/nonexistent/libasperity.so.1", result.stderr)
+
+    def test_the_soname_through_the_system_loader(self):
+        directory = os.path.dirname(os.path.abspath(asperity.library_path))
+        result = self._import(LD_LIBRARY_PATH=directory)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertEqual(result.stdout.strip(), "libasperity.so.%d" % asperity.ASP_ABI_VERSION)
+        result = self._import(LD_LIBRARY_PATH="/nonexistent")
+        if result.returncode != 0:  # unless a libasperity is installed on the machine
+            self.assertIn("libasperity.so.%d" % asperity.ASP_ABI_VERSION, result.stderr)
+            self.assertIn("find_library", result.stderr)
 
 
 class GridAndSystem(unittest.TestCase):
