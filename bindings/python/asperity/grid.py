@@ -1,0 +1,150 @@
+"""The Grid: a 1D or 2D periodic discretisation (asp_grid)."""
+import ctypes
+
+from . import _names
+from ._library import lib, check
+
+__all__ = ["Grid", "set_fft_planning"]
+
+
+class Grid:
+    """A periodic grid: ``Grid(nx, lx)`` in 1D, ``Grid(nx, ny, lx, ly)`` in 2D.
+
+    nx (and ny) pixels on a length lx (a box lx x ly); pixel i sits at x_i = i*lx/nx. A 1 x N
+    strip is a valid 2D grid. ``fft_planning`` ("measure", the default, or "estimate") is
+    passed to :meth:`set_fft_planning` right after creation.
+
+    Fields on the grid are NumPy arrays of shape ``(ny, nx)`` in C order (``a[y, x]``) or
+    ``(nx, ny)`` in Fortran order, ``(nx,)`` in 1D; see :attr:`shape`. The grid owns its
+    handle; :meth:`close` (or leaving a ``with`` block) gives it up, and systems made on the
+    grid keep it alive as long as they need it.
+    """
+
+    def __init__(self, *args, fft_planning=None):
+        handle = ctypes.c_void_p()
+        if len(args) == 2:
+            nx, lx = args
+            check(lib.asp_grid_create_1d(int(nx), float(lx), ctypes.byref(handle)),
+                  "asp_grid_create_1d")
+        elif len(args) == 4:
+            nx, ny, lx, ly = args
+            check(lib.asp_grid_create_2d(int(nx), int(ny), float(lx), float(ly),
+                                         ctypes.byref(handle)), "asp_grid_create_2d")
+        else:
+            raise TypeError("Grid(nx, lx) or Grid(nx, ny, lx, ly), got %d arguments" % len(args))
+        self._handle = handle.value
+        dimension, nx, ny, n = ctypes.c_int(), ctypes.c_int64(), ctypes.c_int64(), ctypes.c_int64()
+        check(lib.asp_grid_get_shape(self._handle, ctypes.byref(dimension), ctypes.byref(nx),
+                                     ctypes.byref(ny), ctypes.byref(n)), "asp_grid_get_shape")
+        lx, ly = ctypes.c_double(), ctypes.c_double()
+        check(lib.asp_grid_get_box(self._handle, ctypes.byref(lx), ctypes.byref(ly)),
+              "asp_grid_get_box")
+        self._dimension, self._nx, self._ny, self._n = dimension.value, nx.value, ny.value, n.value
+        self._lx, self._ly = lx.value, ly.value
+        if fft_planning is not None:
+            self.set_fft_planning(fft_planning)
+
+    @classmethod
+    def one_d(cls, nx, lx, **kwargs):
+        """A 1D grid of nx pixels on a length lx (the same as ``Grid(nx, lx)``)."""
+        return cls(nx, lx, **kwargs)
+
+    @classmethod
+    def two_d(cls, nx, ny, lx, ly, **kwargs):
+        """A 2D grid of nx x ny pixels on lx x ly (the same as ``Grid(nx, ny, lx, ly)``)."""
+        return cls(nx, ny, lx, ly, **kwargs)
+
+    # -- handle ------------------------------------------------------------------------------
+    @property
+    def handle(self):
+        """The asp_grid* address (an int); raises NullPointerError once closed."""
+        if self._handle is None:
+            from .errors import NullPointerError
+            from . import _constants as _c
+            raise NullPointerError(_c.ASP_ERR_NULL_POINTER, "the grid is closed", "Grid")
+        return self._handle
+
+    def close(self, _destroy=lib.asp_grid_destroy):
+        """Gives up this object's reference to the grid (asp_grid_destroy); idempotent."""
+        handle, self._handle = getattr(self, "_handle", None), None
+        if handle is not None:
+            _destroy(handle)
+
+    __del__ = close
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    # -- shape (read once at creation: a grid is immutable) --------------------------------
+    @property
+    def dimension(self):
+        """1 or 2."""
+        return self._dimension
+
+    @property
+    def nx(self):
+        """Pixels along x."""
+        return self._nx
+
+    @property
+    def ny(self):
+        """Pixels along y (1 in 1D)."""
+        return self._ny
+
+    @property
+    def n_pixels(self):
+        """nx*ny."""
+        return self._n
+
+    @property
+    def lx(self):
+        """Box length along x."""
+        return self._lx
+
+    @property
+    def ly(self):
+        """Box length along y (1 in 1D, so that lx*ly/(nx*ny) is the pixel size)."""
+        return self._ly
+
+    @property
+    def shape(self):
+        """The shape of the field arrays the package returns: (ny, nx), or (nx,) in 1D."""
+        return (self._nx,) if self._dimension == 1 else (self._ny, self._nx)
+
+    @property
+    def box(self):
+        """(lx, ly)."""
+        return (self._lx, self._ly)
+
+    def coordinates(self):
+        """The pixel positions: x of shape (nx,) in 1D; (x, y) of the field shape in 2D."""
+        import numpy as np
+        x = np.arange(self._nx) * (self._lx / self._nx)
+        if self._dimension == 1:
+            return x
+        y = np.arange(self._ny) * (self._ly / self._ny)
+        xx, yy = np.meshgrid(x, y)  # (ny, nx)
+        return xx, yy
+
+    def set_fft_planning(self, planning):
+        """How hard FFTW looks for fast plans: "measure" (default) or "estimate".
+
+        Call it right after creating the grid: once plans exist the library raises
+        InvalidStateError (asp_grid_set_fft_planning).
+        """
+        check(lib.asp_grid_set_fft_planning(
+            self.handle, _names.resolve(_names.FFT_PLANNING, planning, "planning")),
+            "asp_grid_set_fft_planning")
+
+    def __repr__(self):
+        if self._dimension == 1:
+            return "Grid(%d, %r)" % (self._nx, self._lx)
+        return "Grid(%d, %d, %r, %r)" % (self._nx, self._ny, self._lx, self._ly)
+
+
+def set_fft_planning(grid, planning):
+    """The same as ``grid.set_fft_planning(planning)``."""
+    grid.set_fft_planning(planning)

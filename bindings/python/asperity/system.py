@@ -1,0 +1,234 @@
+"""The System: substrate, topography, interaction and current state (asp_system)."""
+import ctypes
+
+from . import _constants as _c
+from . import _names
+from ._arrays import empty_field, field_pointer
+from ._callbacks import Potential
+from ._library import lib, check
+from .errors import NullPointerError
+
+__all__ = ["System"]
+
+_SUBSTRATES = ("periodic", "free")
+
+
+class System:
+    """A contact problem on a grid: ``System(grid, contact_modulus, substrate="periodic")``.
+
+    ``substrate`` is "periodic" (asp_system_create) or "free" (asp_system_create_free: a
+    non-periodic half-space loaded only inside the box; 2D grids only). The system starts
+    with a flat topography, zero pressure and the plain hard wall. It holds a reference to
+    its Grid (and the library keeps the C grid alive too).
+
+    Fields (new NumPy arrays of shape (ny, nx) in C order, (nx,) in 1D): :attr:`pressure`,
+    :attr:`gap`, :attr:`displacement`, :attr:`topography` (settable from an array), or
+    :meth:`get_field` with an optional ``out`` array.
+    Scalars: :meth:`get` by name ("mean_pressure", "contact_fraction", ...; see
+    ``asperity.SCALARS``) or integer key, and a read-only property of each name
+    (``system.mean_pressure``).
+    Interactions: :meth:`set_hard_wall` (default), :meth:`set_adhesion`,
+    :meth:`set_soft_wall`, :meth:`set_lennard_jones`, :meth:`set_potential`.
+    """
+
+    def __init__(self, grid, contact_modulus, substrate="periodic"):
+        if substrate not in _SUBSTRATES:
+            raise ValueError("substrate must be one of %s, got %r" % (_SUBSTRATES, substrate))
+        function = "asp_system_create" if substrate == "periodic" else "asp_system_create_free"
+        handle = ctypes.c_void_p()
+        check(getattr(lib, function)(grid.handle, float(contact_modulus), ctypes.byref(handle)),
+              function)
+        self._handle = handle.value
+        self._grid = grid
+        self._substrate = substrate
+        self._contact_modulus = float(contact_modulus)
+        self._potential = None  # the Potential wrapper while a Python potential is set
+
+    # -- handle ------------------------------------------------------------------------------
+    @property
+    def handle(self):
+        """The asp_system* address (an int); raises NullPointerError once closed."""
+        if self._handle is None:
+            raise NullPointerError(_c.ASP_ERR_NULL_POINTER, "the system is closed", "System")
+        return self._handle
+
+    def close(self, _destroy=lib.asp_system_destroy):
+        """Destroys the system (asp_system_destroy) and drops its callback; idempotent."""
+        handle, self._handle = getattr(self, "_handle", None), None
+        if handle is not None:
+            _destroy(handle)
+        self._potential = None
+
+    __del__ = close
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    @property
+    def grid(self):
+        """The Grid the system was made on."""
+        return self._grid
+
+    @property
+    def substrate(self):
+        """"periodic" or "free"."""
+        return self._substrate
+
+    @property
+    def contact_modulus(self):
+        """E* the system was created with."""
+        return self._contact_modulus
+
+    def _call(self, function, *args):
+        """Calls lib.<function>(handle, *args); a failing Python potential is chained."""
+        status = getattr(lib, function)(self.handle, *args)
+        if status == _c.ASP_ERR_CALLBACK and self._potential is not None:
+            message = lib.asp_last_error_message().decode("utf-8", "replace")
+            self._potential.failure.raise_from(message, function)
+        if self._potential is not None:
+            self._potential.failure.take()
+        check(status, function)
+
+    # -- topography and interactions ---------------------------------------------------------
+    def set_topography(self, heights):
+        """Copies the heights (an array of the layout rules) and resets the state."""
+        self._call("asp_system_set_topography", field_pointer(heights, self._grid, "heights"),
+                   self._grid.n_pixels)
+
+    def set_k0(self, k0):
+        """The stiffness K~(0) > 0 of the mean mode (UnsupportedError on a free system)."""
+        self._call("asp_system_set_k0", float(k0))
+
+    def set_adhesion(self, work_of_adhesion, range):  # noqa: A002 - the header's name
+        """Hard wall with exponential adhesion phi(g) = -w exp(-g/range)."""
+        self._call("asp_system_set_adhesion", float(work_of_adhesion), float(range))
+        self._potential = None
+
+    def set_soft_wall(self, gamma_r, rho_r, gamma_a=0.0, rho_a=None):
+        """phi(g) = gamma_r exp(-2g/rho_r) - gamma_a exp(-g/rho_a); rho_a defaults to rho_r."""
+        self._call("asp_system_set_soft_wall", float(gamma_r), float(rho_r), float(gamma_a),
+                   float(rho_r if rho_a is None else rho_a))
+        self._potential = None
+
+    def set_lennard_jones(self, work_of_adhesion, equilibrium_distance):
+        """The Lennard-Jones 9-3 wall of work w and equilibrium distance z0."""
+        self._call("asp_system_set_lennard_jones", float(work_of_adhesion),
+                   float(equilibrium_distance))
+        self._potential = None
+
+    def set_hard_wall(self):
+        """The plain, non-adhesive hard wall (the default)."""
+        self._call("asp_system_set_hard_wall")
+        self._potential = None
+
+    def set_potential(self, fn, hard_wall=False):
+        """A Python potential: ``fn(gap) -> (phi, dphi, d2phi or None)`` on NumPy arrays.
+
+        ``gap`` is a read-only float64 array of the n = nx*ny gaps (flat, x fastest, in the
+        system's units); fn returns phi, phi' and phi'' at each (arrays of n values or
+        scalars); d2phi may be None when the solver does not ask for it (it is asked for only
+        by some solvers). ``hard_wall=False``: a soft wall (the unconstrained solvers);
+        True: the hard wall g >= 0 with the potential on the open gap ("lbfgsb" on the gap).
+
+        The system keeps fn alive until another interaction is set or the system is closed.
+        An exception raised by fn ends the solve (or :meth:`get`) with
+        :class:`asperity.CallbackError`, chained from it (``__cause__``); the system goes back
+        to the state the solve started from and stays usable. fn must not use this system or
+        the solver solving it.
+        """
+        potential = Potential(fn)
+        self._call("asp_system_set_potential", potential.c_function, None,
+                   1 if hard_wall else 0)
+        self._potential = potential
+
+    @property
+    def potential(self):
+        """The Python function set by set_potential (None for the built-in interactions)."""
+        return None if self._potential is None else self._potential.fn
+
+    def set_reference_pressure(self, reference_pressure):
+        """The pressure solver errors are divided by (0: the library's default scale)."""
+        self._call("asp_system_set_reference_pressure", float(reference_pressure))
+
+    def reset(self):
+        """Forgets the state (zero pressure): the next solve starts cold."""
+        self._call("asp_system_reset")
+
+    # -- results -----------------------------------------------------------------------------
+    def get(self, key):
+        """A scalar result by name ("mean_pressure", ...) or ASP_* key (asp_system_get)."""
+        value = ctypes.c_double()
+        self._call("asp_system_get", _names.resolve(_names.SCALAR, key, "key"),
+                   ctypes.byref(value))
+        return value.value
+
+    def scalars(self):
+        """Every scalar result the system has, as a dict (unsupported ones are left out)."""
+        from .errors import UnsupportedError
+        result = {}
+        for name in _names.FAMILIES[_names.SCALAR]:
+            try:
+                result[name] = self.get(name)
+            except UnsupportedError:
+                pass
+        return result
+
+    def get_field(self, field, out=None):
+        """A field by name ("pressure", "gap", "displacement", "topography") or ASP_FIELD_*.
+
+        Returns a new (ny, nx) C-order array, or fills ``out`` (an array of the layout rules,
+        writeable) and returns it.
+        """
+        code = _names.resolve(_names.FIELD, field, "field")
+        if out is None:
+            out = empty_field(self._grid)
+        pointer = field_pointer(out, self._grid, "out", writeable=True)
+        self._call("asp_system_get_field", code, pointer, self._grid.n_pixels)
+        return out
+
+    @property
+    def pressure(self):
+        """The pressure field (positive compressive), a new (ny, nx) array."""
+        return self.get_field("pressure")
+
+    @property
+    def gap(self):
+        """The gap field, a new (ny, nx) array."""
+        return self.get_field("gap")
+
+    @property
+    def displacement(self):
+        """The displacement field (positive into the body), a new (ny, nx) array."""
+        return self.get_field("displacement")
+
+    @property
+    def topography(self):
+        """The heights, a new (ny, nx) array; assigning an array calls set_topography."""
+        return self.get_field("topography")
+
+    @topography.setter
+    def topography(self, heights):
+        self.set_topography(heights)
+
+    def __repr__(self):
+        return "System(%r, %r, substrate=%r)" % (self._grid, self._contact_modulus,
+                                                 self._substrate)
+
+
+def _scalar_property(name):
+    def getter(self):
+        return self.get(name)
+    getter.__name__ = name
+    getter.__doc__ = "system.get(%r): the %s of the current state (asp_system_get)." % (
+        name, name.replace("_", " "))
+    return property(getter)
+
+
+# A read-only property per scalar result of the header (mean_pressure, contact_fraction, ...).
+for _name in _names.FAMILIES[_names.SCALAR]:
+    if not hasattr(System, _name):
+        setattr(System, _name, _scalar_property(_name))
+del _name
