@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Writes asperity/_constants.py from the C headers.
 
 Usage: generate_constants.py OUTPUT HEADER [HEADER...]

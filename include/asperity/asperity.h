@@ -415,8 +415,9 @@ ASP_EXPORT int asp_system_set_hard_wall(asp_system *system);
  * d2phi, user_data) writes phi(gap[i]), phi'(gap[i]) and (if d2phi is not NULL) phi''(gap[i])
  * for i = 0..n-1 and returns 0; d2phi is NULL when the solver does not need it. The gaps and
  * values are in the system's units (physical, as the grid, heights and E*: a solve's internal
- * scaling is undone around the call). It is called once per evaluation with all pixels, and
- * only from the thread that calls asp_solver_solve (or asp_system_get for
+ * scaling is undone around the call). It is called once per evaluation with all pixels (and,
+ * with the hard wall, also with the single gap 0, where the solver needs the wall's adhesive
+ * stress -phi'(0)), and only from the thread that calls asp_solver_solve (or asp_system_get for
  * ASP_INTERACTION_ENERGY, and without the hard wall for ASP_CONTACT_FRACTION, which asks where
  * phi' < 0); it must not use the system or solver being solved. user_data is passed through
  * untouched.
@@ -505,7 +506,8 @@ ASP_EXPORT int asp_algorithms(char *buffer, int64_t size, int64_t *length);
  * ========================================================================================== */
 typedef struct asp_solver asp_solver;
 
-/* An algorithm by name (see asp_algorithms and docs/algorithms.md):
+/* An algorithm by name (see asp_algorithms and docs/algorithms.md); a name this build does
+ * not provide is refused with ASP_ERR_UNSUPPORTED, listing the names it does:
  *   "pk"          Polonsky & Keer constrained conjugate gradient on the pressure (hard wall,
  *                 no adhesion, periodic or free substrate). Controls:
  *                 ASP_CONTROL_MEAN_PRESSURE, ASP_CONTROL_PENETRATION.

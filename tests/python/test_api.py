@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """The package's API: module functions, Grid, System, Solver, errors, handles."""
 import gc
 import os

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Fields in and out: the accepted layouts, without a copy, and the refusals."""
 import unittest
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Python callbacks: a potential equal to the built-in soft wall, failures, progress."""
 import gc
 import unittest

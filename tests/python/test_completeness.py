@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Every function and integer constant of asperity.h has its Python counterpart.
 
 The header is parsed here (ASPERITY_HEADER, set by CTest, names the source tree's copy):

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Closed forms through Python: Hertz and Westergaard (the scenes and tolerances of
 tests/unit/test_contact_oracles.cpp), and the unconstrained solvers agreeing on a soft wall."""
 import math

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """asperity: rough-surface contact mechanics with FFT-based boundary elements (Python).
 
 A ctypes binding of the C library libasperity. The C header asperity.h is the manual; this

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Fields in and out: the layout rules between NumPy arrays and the library's x-fastest arrays.
 
 The library stores a field of a 2D grid x fastest, ``f[i + nx*j]``. Two NumPy forms have

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Python callables behind the C callbacks: the potential of a System and a Solver's progress.
 
 Each wrapper owns the ctypes function object that C calls (so it stays alive while set) and

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Loading of libasperity and the table of its C functions.
 
 The library is looked for, in this order:

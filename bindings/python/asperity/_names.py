@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Names for the header's constants: families, nicer names and strings accepted by methods.
 
 The header groups its integer constants in families by range: status codes 0..99, FFT

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """The exceptions raised by asperity.
 
 Every non-OK status of the C library is raised as an instance of :class:`Error` (or of the

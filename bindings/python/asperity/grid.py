@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """The Grid: a 1D or 2D periodic discretisation (asp_grid)."""
 import ctypes
 

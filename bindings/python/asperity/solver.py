@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """The Solver: an algorithm, its options, and the report and history of its last run."""
 import ctypes
 import dataclasses

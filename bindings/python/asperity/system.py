@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """The System: substrate, topography, interaction and current state (asp_system)."""
 import ctypes
 

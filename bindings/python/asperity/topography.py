@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Topography generators and tools (asp_topography_*).
 
 Generators return a new array of the grid's field shape, ``(ny, nx)`` in C order (``(nx,)``
