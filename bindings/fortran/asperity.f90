@@ -111,7 +111,8 @@ module asperity
 
   public :: asp_status_string, asp_last_error_message, asp_version_string, asp_abi_version
   public :: asp_grid_create_1d, asp_grid_create_2d, asp_grid_destroy, asp_grid_get_shape, &
-            asp_grid_get_box, asp_grid_set_fft_planning, asp_fft_export_wisdom, &
+            asp_grid_get_box, asp_grid_set_fft_planning, asp_grid_set_threads, &
+            asp_grid_get_threads, asp_fft_export_wisdom, &
             asp_fft_import_wisdom
   public :: asp_topography_flat, asp_topography_sphere, asp_topography_paraboloid, &
             asp_topography_sinusoid, asp_topography_double_sinewave, &
@@ -209,6 +210,18 @@ module asperity
       type(c_ptr), value :: grid
       integer(c_int), value :: planning
       integer(c_int) :: asp_grid_set_fft_planning
+    end function
+    function asp_grid_set_threads(grid, threads) bind(c, name='asp_grid_set_threads')
+      import :: c_int, c_ptr
+      type(c_ptr), value :: grid
+      integer(c_int), value :: threads
+      integer(c_int) :: asp_grid_set_threads
+    end function
+    function asp_grid_get_threads(grid, threads) bind(c, name='asp_grid_get_threads')
+      import :: c_int, c_ptr
+      type(c_ptr), value :: grid
+      integer(c_int), intent(out) :: threads
+      integer(c_int) :: asp_grid_get_threads
     end function
 
     ! ---- topographies ----

@@ -62,6 +62,21 @@ int asp_grid_set_fft_planning(asp_grid *grid, int planning) {
   });
 }
 
+int asp_grid_set_threads(asp_grid *grid, int threads) {
+  return guarded("asp_grid_set_threads", [&] {
+    asp::require_not_null(grid, "grid");
+    grid->grid->set_threads(threads);
+  });
+}
+
+int asp_grid_get_threads(const asp_grid *grid, int *threads) {
+  return guarded("asp_grid_get_threads", [&] {
+    asp::require_not_null(grid, "grid");
+    asp::require_not_null(threads, "threads");
+    *threads = grid->grid->threads();
+  });
+}
+
 int asp_fft_export_wisdom(const char *path) {
   return guarded("asp_fft_export_wisdom", [&] {
     asp::require_not_null(path, "path");

@@ -32,6 +32,51 @@ int dimensions(std::int64_t nx, std::int64_t ny, int dims[2]) {
   return 1;
 }
 
+// Transforms of fewer points run on one thread: below this, waking threads costs more than
+// the work they would share (the same bound as the element-wise loops').
+constexpr std::int64_t threaded_points = 32768;
+
+// Plans made while it lives, of transforms of `points` points, run on `threads` threads
+// (FFTW's OpenMP threads, when the build has them; one otherwise). FFTW's thread count for
+// new plans is process-wide state: it is set under the planner lock and put back afterwards,
+// so that other FFTW users in the process keep theirs.
+// FFTW's threads, set up once (under the planner lock) before the first threaded plan or the
+// first wisdom import or export: wisdom may hold threaded plans, which FFTW reads only once
+// its threads are set up. False if the build has none or FFTW could not set them up.
+bool fftw_threads_ready() {
+#ifdef ASPERITY_FFTW_THREADS
+  static const bool ready = fftw_init_threads() != 0;
+  return ready;
+#else
+  return false;
+#endif
+}
+
+class PlannerThreads {
+ public:
+  PlannerThreads(int threads, std::int64_t points) {
+#ifdef ASPERITY_FFTW_THREADS
+    if (fftw_threads_ready()) {
+      previous_ = fftw_planner_nthreads();
+      fftw_plan_with_nthreads(threads > 1 && points >= threaded_points ? threads : 1);
+    }
+#else
+    (void)threads;
+    (void)points;
+#endif
+  }
+  ~PlannerThreads() {
+#ifdef ASPERITY_FFTW_THREADS
+    if (previous_ > 0) fftw_plan_with_nthreads(previous_);
+#endif
+  }
+  PlannerThreads(const PlannerThreads &) = delete;
+  PlannerThreads &operator=(const PlannerThreads &) = delete;
+
+ private:
+  int previous_ = 0;
+};
+
 void destroy(void *plan) {
   if (plan != nullptr) fftw_destroy_plan(static_cast<fftw_plan>(plan));
 }
@@ -45,7 +90,7 @@ void require_plans(fftw_plan a, fftw_plan b) {
 }
 }  // namespace
 
-RealFft::RealFft(std::int64_t nx, std::int64_t ny, FftPlanning planning) {
+RealFft::RealFft(std::int64_t nx, std::int64_t ny, FftPlanning planning, int threads) {
   int dims[2];
   const int rank = dimensions(nx, ny, dims);
   // Plan on scratch arrays: FFTW_MEASURE overwrites what it is given.
@@ -54,6 +99,7 @@ RealFft::RealFft(std::int64_t nx, std::int64_t ny, FftPlanning planning) {
   auto *c = reinterpret_cast<fftw_complex *>(spectrum.data());
 
   std::lock_guard<std::mutex> lock(planner_mutex());
+  const PlannerThreads planner_threads(threads, nx * ny);
   fftw_plan r2c = fftw_plan_dft_r2c(rank, dims, real.data(), c, flags_of(planning));
   fftw_plan c2r =
       fftw_plan_dft_c2r(rank, dims, c, real.data(), flags_of(planning) | FFTW_DESTROY_INPUT);
@@ -79,7 +125,8 @@ void RealFft::backward(Complex *spectrum, double *real) const {
                        real);
 }
 
-PaddedRealFft::PaddedRealFft(std::int64_t nx, std::int64_t ny, FftPlanning planning)
+PaddedRealFft::PaddedRealFft(std::int64_t nx, std::int64_t ny, FftPlanning planning,
+                             int threads)
     : nx_(nx), ny_(ny) {
   const int width = static_cast<int>(2 * nx), height = static_cast<int>(2 * ny);
   const int columns = static_cast<int>(nx + 1), rows = static_cast<int>(ny);
@@ -90,6 +137,7 @@ PaddedRealFft::PaddedRealFft(std::int64_t nx, std::int64_t ny, FftPlanning plann
   const unsigned flags = flags_of(planning);
 
   std::lock_guard<std::mutex> lock(planner_mutex());
+  const PlannerThreads planner_threads(threads, 4 * nx * ny);
   // Rows along x: ny of them, 2nx reals each, contiguous; out nx+1 complex each, contiguous.
   fftw_plan r2c = fftw_plan_many_dft_r2c(1, &width, rows, real.data(), nullptr, 1, width, c,
                                          nullptr, 1, columns, flags);
@@ -145,7 +193,8 @@ void PaddedRealFft::backward(Complex *spectrum, double *box, double *rows) const
     std::copy(rows + width * j, rows + width * j + nx_, box + nx_ * j);
 }
 
-HalfComplexFft::HalfComplexFft(std::int64_t nx, std::int64_t ny, FftPlanning planning) {
+HalfComplexFft::HalfComplexFft(std::int64_t nx, std::int64_t ny, FftPlanning planning,
+                               int threads) {
   int dims[2];
   const int rank = dimensions(nx, ny, dims);
   const fftw_r2r_kind forward_kinds[2] = {FFTW_R2HC, FFTW_R2HC};
@@ -153,6 +202,7 @@ HalfComplexFft::HalfComplexFft(std::int64_t nx, std::int64_t ny, FftPlanning pla
   Field in(static_cast<std::size_t>(nx * ny)), out(static_cast<std::size_t>(nx * ny));
 
   std::lock_guard<std::mutex> lock(planner_mutex());
+  const PlannerThreads planner_threads(threads, nx * ny);
   fftw_plan r2hc =
       fftw_plan_r2r(rank, dims, in.data(), out.data(), forward_kinds, flags_of(planning));
   fftw_plan hc2r = fftw_plan_r2r(rank, dims, out.data(), in.data(), backward_kinds,
@@ -178,12 +228,14 @@ void HalfComplexFft::backward(double *coefficients, double *real) const {
 
 void export_fft_wisdom(const std::string &path) {
   std::lock_guard<std::mutex> lock(planner_mutex());
+  fftw_threads_ready();
   if (fftw_export_wisdom_to_filename(path.c_str()) == 0)
     throw Error(Status::io, "argument 'path': cannot write FFTW wisdom to '" + path + "'");
 }
 
 void import_fft_wisdom(const std::string &path) {
   std::lock_guard<std::mutex> lock(planner_mutex());
+  fftw_threads_ready();
   if (fftw_import_wisdom_from_filename(path.c_str()) == 0)
     throw Error(Status::io,
                 "argument 'path': cannot read FFTW wisdom from '" + path +

@@ -19,7 +19,7 @@ enum class FftPlanning { estimate, measure };
 // Real-to-complex and back: the half spectrum is halved along x, S[kx + (nx/2+1)*ky].
 class RealFft {
  public:
-  RealFft(std::int64_t nx, std::int64_t ny, FftPlanning planning);
+  RealFft(std::int64_t nx, std::int64_t ny, FftPlanning planning, int threads = 1);
   ~RealFft();
   RealFft(const RealFft &) = delete;
   RealFft &operator=(const RealFft &) = delete;
@@ -42,7 +42,7 @@ class RealFft {
 // library's allocator). No transform is normalised: backward(forward(f)) = 4 nx ny f.
 class PaddedRealFft {
  public:
-  PaddedRealFft(std::int64_t nx, std::int64_t ny, FftPlanning planning);
+  PaddedRealFft(std::int64_t nx, std::int64_t ny, FftPlanning planning, int threads = 1);
   ~PaddedRealFft();
   PaddedRealFft(const PaddedRealFft &) = delete;
   PaddedRealFft &operator=(const PaddedRealFft &) = delete;
@@ -64,7 +64,7 @@ class PaddedRealFft {
 // part of frequency k for k <= n/2 and the imaginary part of frequency n - k above.
 class HalfComplexFft {
  public:
-  HalfComplexFft(std::int64_t nx, std::int64_t ny, FftPlanning planning);
+  HalfComplexFft(std::int64_t nx, std::int64_t ny, FftPlanning planning, int threads = 1);
   ~HalfComplexFft();
   HalfComplexFft(const HalfComplexFft &) = delete;
   HalfComplexFft &operator=(const HalfComplexFft &) = delete;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "core/grid.hpp"
 
+#include <string>
+
 #include <cfloat>
 #include <cmath>
 #include <limits>
@@ -60,7 +62,7 @@ std::shared_ptr<Grid> Grid::create(int dimension, std::int64_t nx, std::int64_t 
 }
 
 Grid::Grid(int dimension, std::int64_t nx, std::int64_t ny, double lx, double ly)
-    : dimension_(dimension), nx_(nx), ny_(ny), lx_(lx), ly_(ly) {}
+    : dimension_(dimension), nx_(nx), ny_(ny), lx_(lx), ly_(ly), threads_(default_threads()) {}
 
 SpectralLayout Grid::half_spectrum() const {
   return SpectralLayout(Packing::half_spectrum, nx_, ny_, lx_, ly_);
@@ -71,19 +73,19 @@ const RealFft &Grid::real_fft(std::int64_t nx, std::int64_t ny) const {
   const auto key = std::make_tuple(nx, ny);
   auto found = real_plans_.find(key);
   if (found == real_plans_.end())
-    found = real_plans_.emplace(key, std::make_unique<RealFft>(nx, ny, planning_)).first;
+    found = real_plans_.emplace(key, std::make_unique<RealFft>(nx, ny, planning_, threads_)).first;
   return *found->second;
 }
 
 const HalfComplexFft &Grid::half_complex_fft() const {
   std::lock_guard<std::mutex> lock(plans_mutex_);
-  if (!half_complex_plan_) half_complex_plan_.reset(new HalfComplexFft(nx_, ny_, planning_));
+  if (!half_complex_plan_) half_complex_plan_.reset(new HalfComplexFft(nx_, ny_, planning_, threads_));
   return *half_complex_plan_;
 }
 
 const PaddedRealFft &Grid::padded_fft() const {
   std::lock_guard<std::mutex> lock(plans_mutex_);
-  if (!padded_plan_) padded_plan_.reset(new PaddedRealFft(nx_, ny_, planning_));
+  if (!padded_plan_) padded_plan_.reset(new PaddedRealFft(nx_, ny_, planning_, threads_));
   return *padded_plan_;
 }
 
@@ -93,6 +95,22 @@ void Grid::set_fft_planning(FftPlanning planning) {
     throw Error(Status::invalid_state,
                 "the grid's FFT plans already exist; set the planning right after creating it");
   planning_ = planning;
+}
+
+void Grid::set_threads(int threads) {
+  if (threads < 1)
+    throw Error(Status::invalid_argument,
+                "argument 'threads' is " + std::to_string(threads) + ": must be at least 1");
+  std::lock_guard<std::mutex> lock(plans_mutex_);
+  if (!real_plans_.empty() || half_complex_plan_ || padded_plan_)
+    throw Error(Status::invalid_state,
+                "the grid's FFT plans already exist; set the threads right after creating it");
+  threads_ = threads;
+}
+
+int Grid::threads() const {
+  std::lock_guard<std::mutex> lock(plans_mutex_);
+  return threads_;
 }
 
 FftPlanning Grid::fft_planning() const {

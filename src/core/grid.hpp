@@ -15,6 +15,7 @@
 #include "core/fft_engine.hpp"
 #include "core/reductions.hpp"
 #include "core/spectral_layout.hpp"
+#include "core/threads.hpp"
 
 namespace asp {
 
@@ -56,6 +57,10 @@ class Grid {
   const PaddedRealFft &padded_fft() const;
   void set_fft_planning(FftPlanning planning);
   FftPlanning fft_planning() const;
+  // The threads of the grid's FFTs and of the loops of solves on it (default_threads() at
+  // creation). Set before the plans exist (Error(invalid_state) after), >= 1.
+  void set_threads(int threads);
+  int threads() const;
   bool has_fft_plans() const;
 
   const Reductions &reductions() const { return reductions_; }
@@ -67,6 +72,7 @@ class Grid {
   std::int64_t nx_, ny_;
   double lx_, ly_;
   FftPlanning planning_ = FftPlanning::measure;
+  int threads_;
   mutable std::mutex plans_mutex_;
   mutable std::map<std::tuple<std::int64_t, std::int64_t>, std::unique_ptr<RealFft>> real_plans_;
   mutable std::unique_ptr<HalfComplexFft> half_complex_plan_;

@@ -4,6 +4,11 @@
 // that vectorisation, threads and a distributed grid are decided here and not in each
 // solver. Sums and maxima over the local entries are combined across the grid's parts by its
 // Reductions (the identity on one process).
+//
+// Threads: a loop of at least parallel_entries entries runs on loop_threads() threads (the
+// grid's count during a solve, core/threads.hpp). Reductions add up fixed chunks of
+// chunk_entries entries, each on its own, and then the chunks' results in chunk order,
+// whichever thread did which chunk: their results are the same bits for any thread count.
 #pragma once
 
 #include <algorithm>
@@ -11,25 +16,106 @@
 #include <cstdint>
 #include <limits>
 #include <utility>
+#include <vector>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 #include "core/reductions.hpp"
+#include "core/threads.hpp"
 
 namespace asp {
 namespace loops {
 
+// Loops shorter than this run on one thread: below it, waking threads costs more than the
+// work they would share.
+constexpr std::int64_t parallel_entries = 32768;
+
+// The threads a loop of n entries runs on.
+inline int threads_for(std::int64_t n) {
+  const int threads = loop_threads();
+  return threads > 1 && n >= parallel_entries ? threads : 1;
+}
+
+// body(begin, end, part) for the parts of [0, n), one per thread, contiguous and in order;
+// returns the number of parts (threads may be fewer than asked for).
+template <class Body>
+int in_parts(std::int64_t n, int threads, Body &&body) {
+#ifdef _OPENMP
+  if (threads > 1) {
+    int parts = 1;
+#pragma omp parallel num_threads(threads)
+    {
+      const int part = omp_get_thread_num();
+      const int count = omp_get_num_threads();
+      if (part == 0) parts = count;
+      body(n * part / count, n * (part + 1) / count, part);
+    }
+    return parts;
+  }
+#endif
+  (void)threads;
+  body(std::int64_t{0}, n, 0);
+  return 1;
+}
+
+// Reductions add up chunks of this many entries, then the chunks in order.
+constexpr std::int64_t chunk_entries = 16384;
+
+// Each chunk of [0, n) reduces its entries into its own Partial (reduce(begin, end,
+// partial)); the partials are then folded in chunk order (fold(total, partial)).
+template <class Partial, class Reduce, class Fold>
+Partial reduce_in_parts(std::int64_t n, const Partial &initial, Reduce &&reduce, Fold &&fold) {
+  const std::int64_t chunks = std::max<std::int64_t>(1, (n + chunk_entries - 1) / chunk_entries);
+  if (chunks == 1) {
+    Partial total = initial;
+    reduce(std::int64_t{0}, n, total);
+    return total;
+  }
+  std::vector<Partial> partials(static_cast<std::size_t>(chunks), initial);
+  auto chunk = [&](std::int64_t c) {
+    reduce(c * chunk_entries, std::min(n, (c + 1) * chunk_entries),
+           partials[static_cast<std::size_t>(c)]);
+  };
+  const int threads = threads_for(n);
+#ifdef _OPENMP
+  if (threads > 1) {
+#pragma omp parallel for num_threads(threads) schedule(static)
+    for (std::int64_t c = 0; c < chunks; ++c) chunk(c);
+  } else {
+    for (std::int64_t c = 0; c < chunks; ++c) chunk(c);
+  }
+#else
+  (void)threads;
+  for (std::int64_t c = 0; c < chunks; ++c) chunk(c);
+#endif
+  Partial total = partials[0];
+  for (std::int64_t c = 1; c < chunks; ++c) fold(total, partials[static_cast<std::size_t>(c)]);
+  return total;
+}
+
 // body(i) for i in [0, n).
 template <class Body>
 void for_each(std::int64_t n, Body &&body) {
+  in_parts(n, threads_for(n), [&](std::int64_t begin, std::int64_t end, int) {
 #pragma omp simd
-  for (std::int64_t i = 0; i < n; ++i) body(i);
+    for (std::int64_t i = begin; i < end; ++i) body(i);
+  });
 }
 
 // The sum of value(i) over all entries.
 template <class Value>
 double sum(const Reductions &reductions, std::int64_t n, Value &&value) {
-  double total = 0.0;
-#pragma omp simd reduction(+ : total)
-  for (std::int64_t i = 0; i < n; ++i) total += value(i);
+  double total = reduce_in_parts(
+      n, 0.0,
+      [&](std::int64_t begin, std::int64_t end, double &part) {
+        double s = 0.0;
+#pragma omp simd reduction(+ : s)
+        for (std::int64_t i = begin; i < end; ++i) s += value(i);
+        part = s;
+      },
+      [](double &total, double part) { total += part; });
   reductions.combine_sums(&total, 1);
   return total;
 }
@@ -37,12 +123,19 @@ double sum(const Reductions &reductions, std::int64_t n, Value &&value) {
 // The largest value(i) over all entries (-infinity for none; NaN may be dropped).
 template <class Value>
 double maximum(const Reductions &reductions, std::int64_t n, Value &&value) {
-  double largest = -std::numeric_limits<double>::infinity();
-#pragma omp simd reduction(max : largest)
-  for (std::int64_t i = 0; i < n; ++i) {
-    const double v = value(i);
-    largest = v > largest ? v : largest;
-  }
+  constexpr double none = -std::numeric_limits<double>::infinity();
+  double largest = reduce_in_parts(
+      n, none,
+      [&](std::int64_t begin, std::int64_t end, double &part) {
+        double m = none;
+#pragma omp simd reduction(max : m)
+        for (std::int64_t i = begin; i < end; ++i) {
+          const double v = value(i);
+          m = v > m ? v : m;
+        }
+        part = m;
+      },
+      [](double &total, double part) { total = part > total ? part : total; });
   reductions.combine_maxima(&largest, 1);
   return largest;
 }
@@ -50,12 +143,18 @@ double maximum(const Reductions &reductions, std::int64_t n, Value &&value) {
 // K sums at once: body(i, sum) adds entry i's terms to sum[0..K-1].
 template <int K, class Body>
 std::array<double, K> sums(const Reductions &reductions, std::int64_t n, Body &&body) {
-  double sum[K] = {};
+  std::array<double, K> out = reduce_in_parts(
+      n, std::array<double, K>{},
+      [&](std::int64_t begin, std::int64_t end, std::array<double, K> &part) {
+        double sum[K] = {};
 #pragma omp simd reduction(+ : sum[:K])
-  for (std::int64_t i = 0; i < n; ++i) body(i, sum);
-  reductions.combine_sums(sum, K);
-  std::array<double, K> out;
-  for (int k = 0; k < K; ++k) out[k] = sum[k];
+        for (std::int64_t i = begin; i < end; ++i) body(i, sum);
+        for (int k = 0; k < K; ++k) part[k] = sum[k];
+      },
+      [](std::array<double, K> &total, const std::array<double, K> &part) {
+        for (int k = 0; k < K; ++k) total[k] += part[k];
+      });
+  reductions.combine_sums(out.data(), K);
   return out;
 }
 
@@ -65,15 +164,24 @@ std::array<double, K> sums(const Reductions &reductions, std::int64_t n, Body &&
 template <int K, class Body>
 std::array<double, K + 1> sums_and_max(const Reductions &reductions, std::int64_t n,
                                        Body &&body) {
-  double sum[K] = {};
-  double max = -std::numeric_limits<double>::infinity();
+  std::array<double, K + 1> initial{};
+  initial[K] = -std::numeric_limits<double>::infinity();
+  std::array<double, K + 1> out = reduce_in_parts(
+      n, initial,
+      [&](std::int64_t begin, std::int64_t end, std::array<double, K + 1> &part) {
+        double sum[K] = {};
+        double max = -std::numeric_limits<double>::infinity();
 #pragma omp simd reduction(+ : sum[:K]) reduction(max : max)
-  for (std::int64_t i = 0; i < n; ++i) body(i, sum, max);
-  reductions.combine_sums(sum, K);
-  reductions.combine_maxima(&max, 1);
-  std::array<double, K + 1> out;
-  for (int k = 0; k < K; ++k) out[k] = sum[k];
-  out[K] = max;
+        for (std::int64_t i = begin; i < end; ++i) body(i, sum, max);
+        for (int k = 0; k < K; ++k) part[k] = sum[k];
+        part[K] = max;
+      },
+      [](std::array<double, K + 1> &total, const std::array<double, K + 1> &part) {
+        for (int k = 0; k < K; ++k) total[k] += part[k];
+        total[K] = part[K] > total[K] ? part[K] : total[K];
+      });
+  reductions.combine_sums(out.data(), K);
+  reductions.combine_maxima(&out[K], 1);
   return out;
 }
 
@@ -85,9 +193,15 @@ template <class Body>
 void block_sums(const Reductions &reductions, std::int64_t n, int count, double *sum,
                 Body &&body) {
   constexpr std::int64_t block = 256;
-  std::fill(sum, sum + count, 0.0);
-  for (std::int64_t begin = 0; begin < n; begin += block)
-    body(begin, std::min(n, begin + block), sum);
+  const std::vector<double> total = reduce_in_parts(
+      n, std::vector<double>(static_cast<std::size_t>(count), 0.0),
+      [&](std::int64_t begin, std::int64_t end, std::vector<double> &part) {
+        for (std::int64_t b = begin; b < end; b += block) body(b, std::min(end, b + block), part.data());
+      },
+      [](std::vector<double> &total, const std::vector<double> &part) {
+        for (std::size_t k = 0; k < total.size(); ++k) total[k] += part[k];
+      });
+  std::copy(total.begin(), total.end(), sum);
   reductions.combine_sums(sum, count);
 }
 
@@ -105,16 +219,27 @@ void select(std::int64_t n, Keep &&keep, Indices &out) {
 template <int K, int M, class Body>
 std::pair<std::array<double, K>, std::array<double, M>> sums_and_maxima(
     const Reductions &reductions, std::int64_t n, Body &&body) {
-  double sum[K] = {};
-  double max[M];
-  for (int m = 0; m < M; ++m) max[m] = -std::numeric_limits<double>::infinity();
+  using Result = std::pair<std::array<double, K>, std::array<double, M>>;
+  Result initial{};
+  initial.second.fill(-std::numeric_limits<double>::infinity());
+  Result out = reduce_in_parts(
+      n, initial,
+      [&](std::int64_t begin, std::int64_t end, Result &part) {
+        double sum[K] = {};
+        double max[M];
+        for (int m = 0; m < M; ++m) max[m] = -std::numeric_limits<double>::infinity();
 #pragma omp simd reduction(+ : sum[:K]) reduction(max : max[:M])
-  for (std::int64_t i = 0; i < n; ++i) body(i, sum, max);
-  reductions.combine_sums(sum, K);
-  reductions.combine_maxima(max, M);
-  std::pair<std::array<double, K>, std::array<double, M>> out;
-  for (int k = 0; k < K; ++k) out.first[k] = sum[k];
-  for (int m = 0; m < M; ++m) out.second[m] = max[m];
+        for (std::int64_t i = begin; i < end; ++i) body(i, sum, max);
+        for (int k = 0; k < K; ++k) part.first[k] = sum[k];
+        for (int m = 0; m < M; ++m) part.second[m] = max[m];
+      },
+      [](Result &total, const Result &part) {
+        for (int k = 0; k < K; ++k) total.first[k] += part.first[k];
+        for (int m = 0; m < M; ++m)
+          total.second[m] = part.second[m] > total.second[m] ? part.second[m] : total.second[m];
+      });
+  reductions.combine_sums(out.first.data(), K);
+  reductions.combine_maxima(out.second.data(), M);
   return out;
 }
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "solvers/solver.hpp"
 
+#include "core/threads.hpp"
+
 #include <cmath>
 
 #include "core/checks.hpp"
@@ -110,6 +112,8 @@ void Solver::solve(System &system, Control control, double value) {
   settings.progress = progress_;
   settings.progress_data = progress_data_;
   Monitor monitor(settings);
+  // The solve's loops run on the grid's threads (its FFTs were planned with them).
+  const ThreadScope threads(system.grid().threads());
 
   // A user's potential can fail in the middle of a solve (Error(callback)): the system then
   // goes back to the state the solve started from, which costs a copy of it only for them.

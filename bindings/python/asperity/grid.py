@@ -140,6 +140,22 @@ class Grid:
             self.handle, _names.resolve(_names.FFT_PLANNING, planning, "planning")),
             "asp_grid_set_fft_planning")
 
+    @property
+    def threads(self):
+        """The threads of the grid's FFTs and of the solves on it (asp_grid_get_threads).
+
+        Set it right after creating the grid, before any solve (asp_grid_set_threads: a
+        count >= 1; once the FFT plans exist the library raises InvalidStateError). The
+        default is OMP_NUM_THREADS if set, else the number of processors.
+        """
+        value = ctypes.c_int(0)
+        check(lib.asp_grid_get_threads(self.handle, ctypes.byref(value)), "asp_grid_get_threads")
+        return value.value
+
+    @threads.setter
+    def threads(self, count):
+        check(lib.asp_grid_set_threads(self.handle, int(count)), "asp_grid_set_threads")
+
     def __repr__(self):
         if self._dimension == 1:
             return "Grid(%d, %r)" % (self._nx, self._lx)
