@@ -145,9 +145,9 @@ AlgorithmSpec gfmd_algorithm() {
       "mass-weighted: Verlet steps with a damping force on the preconditioned Fourier variable",
       true,
       {{"time_step", OptionType::real, d.time_step, 0.0, 1e300, false, {},
-        "a fixed time step, in the variable's units (0: at every step 1/sqrt of a bound on "
-        "the largest curvature at the iterate, at most 1); a step that raises the energy is "
-        "undone and the motion restarts from rest, a step from rest is halved"},
+        "a fixed time step, in the variable's units (0: 1/sqrt of a bound on the largest "
+        "curvature at the iterate, at most 1, taken again every 10 steps); a step that raises "
+        "the energy is undone and the motion restarts from rest, a step from rest is halved"},
        {"damping", OptionType::real, d.damping, 0.0, 1e300, false, {},
         "eta, the damping per unit time (2 damps the elastic modes, of unit frequency, "
         "critically; softer modes, adhesive or the mean under mean-pressure control, converge "
