@@ -565,10 +565,12 @@ typedef struct asp_solver asp_solver;
  *     "time_step_shrink" (0.5), "mixing" (0.1), "mixing_decay" (0.99), "delay" (5).
  *   "gfmd"        damped Green's function molecular dynamics (mass-weighted; thesis Alg. 5)
  *                 on the variable of "lbfgs_fourier"; periodic substrate. Options
- *                 "time_step" (0: automatic, as FIRE's first step) and "damping" (2: the
- *                 elastic modes critically damped). With a fixed step it needs many
- *                 iterations from a start deep inside a stiff wall; raise "stall_window" for
- *                 it on such scenes. */
+ *                 "time_step" (0: automatic, 1/sqrt of a bound on the largest
+ *                 curvature at the iterate, at most 1, taken again every 10 steps; a
+ *                 positive value is a fixed step) and "damping" (2: the elastic modes critically damped). A step that
+ *                 raises the energy is undone and the motion restarts from rest. Its error
+ *                 does not fall monotonically; raise "stall_window" for it on adhesive
+ *                 scenes under mean-pressure control. */
 ASP_EXPORT int asp_solver_create(const char *algorithm, asp_solver **out);
 ASP_EXPORT void asp_solver_destroy(asp_solver *solver);
 

@@ -145,11 +145,13 @@ AlgorithmSpec gfmd_algorithm() {
       "mass-weighted: Verlet steps with a damping force on the preconditioned Fourier variable",
       true,
       {{"time_step", OptionType::real, d.time_step, 0.0, 1e300, false, {},
-        "the time step, in the variable's units (0: 1/sqrt of a bound on the largest "
-        "curvature at the start)"},
+        "a fixed time step, in the variable's units (0: 1/sqrt of a bound on the largest "
+        "curvature at the iterate, at most 1, taken again every 10 steps); a step that raises "
+        "the energy is undone and the motion restarts from rest, a step from rest is halved"},
        {"damping", OptionType::real, d.damping, 0.0, 1e300, false, {},
         "eta, the damping per unit time (2 damps the elastic modes, of unit frequency, "
-        "critically)"}},
+        "critically; softer modes, adhesive or the mean under mean-pressure control, converge "
+        "faster with less)"}},
       run_gfmd);
 }
 

@@ -4,6 +4,7 @@
 // control; and they refuse what they cannot serve.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -296,6 +297,52 @@ TEST(UnconstrainedSolvers, FireDoesNotRunAwayOnAWallStifferThanItsLargestStep) {
                              << " iterations, error " << r.error;
   EXPECT_NEAR(system.elastic_energy() + system.mean_mode_energy() + system.interaction_energy(),
               energy, 1e-6 * std::fabs(energy));
+  EXPECT_EQ(system.contact_fraction(), contact);
+}
+
+// From the cold state, the crest of a rough surface starts deep inside a stiff repulsive wall
+// (gamma_r = 1e4 against an elastic energy of order 1, the crest two ranges inside it, 21 %
+// contact at the minimum): the curvature at the start is orders of magnitude above the
+// solution's, and the wall's first push sets the surface moving far faster than the elastic
+// modes would. GFMD takes its step from the curvature of each iterate and restarts from rest
+// when the energy rises; with the start's step held fixed (its former rule) it ended 20000
+// iterations at an error of 3e3.
+TEST(UnconstrainedSolvers, GfmdConvergesFromAStartDeepInsideAStiffWall) {
+  auto grid = grid_2d(64, 64, 64.0, 64.0);
+  const std::vector<double> h = asp_test::rough_surface(*grid, 1, 0.1, 1.0, 4.0);
+  System system(grid, 1.0);
+  system.set_topography(h.data());
+  system.set_soft_wall(1e4, 0.1, 10.0, 0.1);
+  double top = h[0], bottom = h[0];
+  for (const double z : h) {
+    top = std::max(top, z);
+    bottom = std::min(bottom, z);
+  }
+  // The crest at a gap of -10 % of the height range, 2.1 ranges inside the wall.
+  const double penetration = 0.1 * (top - bottom);
+
+  Solver reference("lbfgs_fourier");
+  reference.set_option("tolerance", 1e-8);
+  reference.solve(system, Control::penetration, penetration);
+  ASSERT_TRUE(reference.report().converged());
+  const double energy =
+      system.elastic_energy() + system.mean_mode_energy() + system.interaction_energy();
+  const double mean_pressure = system.mean_pressure();
+  const double contact = system.contact_fraction();
+  ASSERT_GT(contact, 0.05);
+
+  system.reset_state();
+  Solver gfmd("gfmd");
+  gfmd.set_option("tolerance", 1e-8);
+  gfmd.set_option("stall_window", 0.0);
+  gfmd.set_option("max_iterations", 20000.0);
+  gfmd.solve(system, Control::penetration, penetration);
+  const SolveReport &r = gfmd.report();
+  EXPECT_TRUE(r.converged()) << termination_name(r.termination) << " after " << r.iterations
+                             << " iterations, error " << r.error;
+  EXPECT_NEAR(system.elastic_energy() + system.mean_mode_energy() + system.interaction_energy(),
+              energy, 1e-6 * std::fabs(energy));
+  EXPECT_NEAR(system.mean_pressure(), mean_pressure, 1e-6 * std::fabs(mean_pressure));
   EXPECT_EQ(system.contact_fraction(), contact);
 }
 
