@@ -63,36 +63,43 @@ int in_parts(std::int64_t n, int threads, Body &&body) {
 // Reductions add up chunks of this many entries, then the chunks in order.
 constexpr std::int64_t chunk_entries = 16384;
 
-// Each chunk of [0, n) reduces its entries into its own Partial (reduce(begin, end,
-// partial)); the partials are then folded in chunk order (fold(total, partial)).
+// Each chunk of `chunk` indices of [0, n) reduces its indices into its own Partial
+// (reduce(begin, end, partial)), on `threads` threads; the partials are then folded in chunk
+// order (fold(total, partial)). The result does not depend on `threads`.
 template <class Partial, class Reduce, class Fold>
-Partial reduce_in_parts(std::int64_t n, const Partial &initial, Reduce &&reduce, Fold &&fold) {
-  const std::int64_t chunks = std::max<std::int64_t>(1, (n + chunk_entries - 1) / chunk_entries);
+Partial reduce_in_chunks(std::int64_t n, std::int64_t chunk, int threads, const Partial &initial,
+                         Reduce &&reduce, Fold &&fold) {
+  const std::int64_t chunks = std::max<std::int64_t>(1, (n + chunk - 1) / chunk);
   if (chunks == 1) {
     Partial total = initial;
     reduce(std::int64_t{0}, n, total);
     return total;
   }
   std::vector<Partial> partials(static_cast<std::size_t>(chunks), initial);
-  auto chunk = [&](std::int64_t c) {
-    reduce(c * chunk_entries, std::min(n, (c + 1) * chunk_entries),
-           partials[static_cast<std::size_t>(c)]);
+  auto one = [&](std::int64_t c) {
+    reduce(c * chunk, std::min(n, (c + 1) * chunk), partials[static_cast<std::size_t>(c)]);
   };
-  const int threads = threads_for(n);
 #ifdef _OPENMP
   if (threads > 1) {
 #pragma omp parallel for num_threads(threads) schedule(static)
-    for (std::int64_t c = 0; c < chunks; ++c) chunk(c);
+    for (std::int64_t c = 0; c < chunks; ++c) one(c);
   } else {
-    for (std::int64_t c = 0; c < chunks; ++c) chunk(c);
+    for (std::int64_t c = 0; c < chunks; ++c) one(c);
   }
 #else
   (void)threads;
-  for (std::int64_t c = 0; c < chunks; ++c) chunk(c);
+  for (std::int64_t c = 0; c < chunks; ++c) one(c);
 #endif
   Partial total = partials[0];
   for (std::int64_t c = 1; c < chunks; ++c) fold(total, partials[static_cast<std::size_t>(c)]);
   return total;
+}
+
+// The same over entries, in chunks of chunk_entries.
+template <class Partial, class Reduce, class Fold>
+Partial reduce_in_parts(std::int64_t n, const Partial &initial, Reduce &&reduce, Fold &&fold) {
+  return reduce_in_chunks(n, chunk_entries, threads_for(n), initial,
+                          std::forward<Reduce>(reduce), std::forward<Fold>(fold));
 }
 
 // body(i) for i in [0, n).

@@ -16,8 +16,11 @@
 // field (Parseval), and K~(|q|) is diagonal.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+
+#include "core/loops.hpp"
 
 namespace asp {
 
@@ -36,17 +39,25 @@ class SpectralLayout {
   // inner loop vectorises (every entry of a row counts twice, minus the edge entries).
   template <class Value>
   double weighted_sum(Value &&value) const {
-    double total = 0.0;
-    for (std::int64_t ky = 0; ky < ny_; ++ky) {
-      const std::int64_t row = row_length_ * ky;
-      double sum = 0.0;
+    // Whole rows per chunk, about loops::chunk_entries entries each (core/loops.hpp): on
+    // several threads when the spectrum is large, with a sum that does not depend on them.
+    const std::int64_t rows = std::max<std::int64_t>(1, loops::chunk_entries / row_length_);
+    return loops::reduce_in_chunks(
+        ny_, rows, loops::threads_for(size()), 0.0,
+        [&](std::int64_t first, std::int64_t end, double &part) {
+          double total = 0.0;
+          for (std::int64_t ky = first; ky < end; ++ky) {
+            const std::int64_t row = row_length_ * ky;
+            double sum = 0.0;
 #pragma omp simd reduction(+ : sum)
-      for (std::int64_t kx = 0; kx < row_length_; ++kx) sum += value(row + kx);
-      sum = 2.0 * sum - value(row);
-      if (second_single_ > 0) sum -= value(row + second_single_);
-      total += (packing_ == Packing::half_complex ? axis_weight(ky, ny_) : 1.0) * sum;
-    }
-    return total;
+            for (std::int64_t kx = 0; kx < row_length_; ++kx) sum += value(row + kx);
+            sum = 2.0 * sum - value(row);
+            if (second_single_ > 0) sum -= value(row + second_single_);
+            total += (packing_ == Packing::half_complex ? axis_weight(ky, ny_) : 1.0) * sum;
+          }
+          part = total;
+        },
+        [](double &total, double part) { total += part; });
   }
 
   // For the half_spectrum packing, weighted_sum(value) = 2 * (sum of value over all entries)

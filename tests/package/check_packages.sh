@@ -30,13 +30,13 @@ for package in "${expected[@]}"; do
   has "$package" "usr/share/doc/$package/copyright" ||
     fail "$package carries no copyright file"
 done
-field "libasperity$abi" Depends | grep -q libfftw3-double3 || fail "the library does not depend on FFTW"
-field libasperity-dev Depends | grep -q "libasperity$abi (= $version)" ||
+grep -qF libfftw3-double3 <<< "$(field "libasperity$abi" Depends)" || fail "the library does not depend on FFTW"
+grep -qF "libasperity$abi (= $version)" <<< "$(field libasperity-dev Depends)" ||
   fail "libasperity-dev does not depend on libasperity$abi (= $version)"
-field libasperity-dev Depends | grep -q libfftw3-dev || fail "libasperity-dev lacks libfftw3-dev"
-field asperity Depends | grep -q "libasperity$abi (= $version)" || fail "asperity lacks the library"
-field python3-asperity Depends | grep -q python3-numpy || fail "python3-asperity lacks NumPy"
-field python3-asperity Depends | grep -q "libasperity$abi (= $version)" ||
+grep -qF libfftw3-dev <<< "$(field libasperity-dev Depends)" || fail "libasperity-dev lacks libfftw3-dev"
+grep -qF "libasperity$abi (= $version)" <<< "$(field asperity Depends)" || fail "asperity lacks the library"
+grep -qF python3-numpy <<< "$(field python3-asperity Depends)" || fail "python3-asperity lacks NumPy"
+grep -qF "libasperity$abi (= $version)" <<< "$(field python3-asperity Depends)" ||
   fail "python3-asperity lacks the library"
 has "libasperity$abi" "libasperity\.so\.$abi( |$)" ||
   fail "the runtime package lacks libasperity.so.$abi"
@@ -61,8 +61,9 @@ export PKG_CONFIG_PATH=$libdir/pkgconfig
 "$cc" -std=c99 -Wall -Werror "$source/examples/c/rough_contact.c" \
   $(pkg-config --cflags --libs asperity) -lm -o "$work/c_pkgconfig"
 "$work/c_pkgconfig" > "$work/c_pkgconfig.out"
-ldd "$work/c_pkgconfig" | grep -q "$libdir/libasperity.so.$abi" ||
-  fail "the C consumer does not load the packaged library"
+loaded=$(ldd "$work/c_pkgconfig")
+grep -qF "$libdir/libasperity.so.$abi" <<< "$loaded" ||
+  fail "the C consumer does not load the packaged library: $loaded"
 
 echo "== C with find_package(asperity)"
 cmake -S "$source/tests/install/consumer" -B "$work/consumer" -DCMAKE_PREFIX_PATH="$root/usr" \
@@ -88,7 +89,7 @@ init=$(find "$root" -path '*/asperity/__init__.py' | head -n 1)
 PYTHONPATH=$(dirname "$(dirname "$init")") "$python" "$source/tests/package/python_consumer.py"
 
 echo "== the packaged command"
-"$root/usr/bin/asperity" --version | grep -q "^asperity $version$" || fail "asperity --version"
+[ "$("$root/usr/bin/asperity" --version)" = "asperity $version" ] || fail "asperity --version"
 (cd "$work" && "$root/usr/bin/asperity" --set grid.nx=64 --set grid.ny=64 \
   --set topography.short_cutoff=0.125 --no-plots --output command > /dev/null)
 echo "packages OK"

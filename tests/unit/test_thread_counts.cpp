@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -63,6 +64,17 @@ double largest(const std::vector<double> &v) {
   return m;
 }
 
+std::string name_of(const Case &c) {
+  std::string name = c.algorithm;
+  if (*c.variable != '\0') name += std::string("_") + c.variable;
+  name += c.wall == Wall::hard ? "_hard" : c.wall == Wall::adhesive ? "_adhesive" : "_soft";
+  if (c.free) name += "_free";
+  return name;
+}
+
+// How GoogleTest shows a case (instead of its bytes).
+void PrintTo(const Case &c, std::ostream *out) { *out << name_of(c); }
+
 class ThreadCounts : public ::testing::TestWithParam<Case> {};
 
 TEST_P(ThreadCounts, TwoThreadsGiveWhatOneGives) {
@@ -76,14 +88,7 @@ TEST_P(ThreadCounts, TwoThreadsGiveWhatOneGives) {
   EXPECT_EQ(two.pressure, again.pressure);  // the same count: the same bits
 }
 
-std::string name_of(const ::testing::TestParamInfo<Case> &info) {
-  const Case &c = info.param;
-  std::string name = c.algorithm;
-  if (*c.variable != '\0') name += std::string("_") + c.variable;
-  name += c.wall == Wall::hard ? "_hard" : c.wall == Wall::adhesive ? "_adhesive" : "_soft";
-  if (c.free) name += "_free";
-  return name;
-}
+std::string param_name(const ::testing::TestParamInfo<Case> &info) { return name_of(info.param); }
 
 INSTANTIATE_TEST_SUITE_P(
     Solvers, ThreadCounts,
@@ -98,6 +103,6 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"fire", "", Wall::soft, false, Control::penetration},
                       Case{"fire_mass_weighted", "", Wall::soft, false, Control::penetration},
                       Case{"gfmd", "", Wall::soft, false, Control::penetration}),
-    name_of);
+    param_name);
 
 }  // namespace
