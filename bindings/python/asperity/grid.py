@@ -3,12 +3,13 @@
 import ctypes
 
 from . import _names
+from ._handles import OwnedHandle
 from ._library import lib, check
 
 __all__ = ["Grid", "set_fft_planning"]
 
 
-class Grid:
+class Grid(OwnedHandle):
     """A periodic grid: ``Grid(nx, lx)`` in 1D, ``Grid(nx, ny, lx, ly)`` in 2D.
 
     nx (and ny) pixels on a length lx (a box lx x ly); pixel i sits at x_i = i*lx/nx. A 1 x N
@@ -55,29 +56,8 @@ class Grid:
         """A 2D grid of nx x ny pixels on lx x ly (the same as ``Grid(nx, ny, lx, ly)``)."""
         return cls(nx, ny, lx, ly, **kwargs)
 
-    # -- handle ------------------------------------------------------------------------------
-    @property
-    def handle(self):
-        """The asp_grid* address (an int); raises NullPointerError once closed."""
-        if self._handle is None:
-            from .errors import NullPointerError
-            from . import _constants as _c
-            raise NullPointerError(_c.ASP_ERR_NULL_POINTER, "the grid is closed", "Grid")
-        return self._handle
-
-    def close(self, _destroy=lib.asp_grid_destroy):
-        """Gives up this object's reference to the grid (asp_grid_destroy); idempotent."""
-        handle, self._handle = getattr(self, "_handle", None), None
-        if handle is not None:
-            _destroy(handle)
-
-    __del__ = close
-
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        self.close()
+    _destroy = lib.asp_grid_destroy
+    _what = "grid"
 
     # -- shape (read once at creation: a grid is immutable) --------------------------------
     @property

@@ -8,6 +8,7 @@ import numpy as np
 from . import _constants as _c
 from . import _names
 from ._callbacks import Progress
+from ._handles import OwnedHandle
 from ._library import PROGRESS_FN, lib, check, read_string
 from .errors import Error, NullPointerError, UnsupportedError
 
@@ -38,7 +39,7 @@ class Report:
     elapsed_seconds: float
 
 
-class Solver:
+class Solver(OwnedHandle):
     """An algorithm by name: ``Solver("pk", tolerance=1e-10, variable="gap", ...)``.
 
     Keyword arguments are options set with :meth:`set_option` (numbers or strings; see
@@ -61,28 +62,12 @@ class Solver:
         for name, value in options.items():
             self.set_option(name, value)
 
-    # -- handle ------------------------------------------------------------------------------
-    @property
-    def handle(self):
-        """The asp_solver* address (an int); raises NullPointerError once closed."""
-        if self._handle is None:
-            raise NullPointerError(_c.ASP_ERR_NULL_POINTER, "the solver is closed", "Solver")
-        return self._handle
+    _destroy = lib.asp_solver_destroy
+    _what = "solver"
 
-    def close(self, _destroy=lib.asp_solver_destroy):
-        """Destroys the solver (asp_solver_destroy) and drops its callback; idempotent."""
-        handle, self._handle = getattr(self, "_handle", None), None
-        if handle is not None:
-            _destroy(handle)
+    def _forget(self):
+        """Drops the progress callback the handle kept alive."""
         self._progress = None
-
-    __del__ = close
-
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        self.close()
 
     @property
     def name(self):

@@ -6,6 +6,7 @@ from . import _constants as _c
 from . import _names
 from ._arrays import empty_field, field_pointer
 from ._callbacks import Potential
+from ._handles import OwnedHandle
 from ._library import lib, check
 from .errors import NullPointerError
 
@@ -14,7 +15,7 @@ __all__ = ["System"]
 _SUBSTRATES = ("periodic", "free")
 
 
-class System:
+class System(OwnedHandle):
     """A contact problem on a grid: ``System(grid, contact_modulus, substrate="periodic")``.
 
     ``substrate`` is "periodic" (asp_system_create) or "free" (asp_system_create_free: a
@@ -45,28 +46,12 @@ class System:
         self._contact_modulus = float(contact_modulus)
         self._potential = None  # the Potential wrapper while a Python potential is set
 
-    # -- handle ------------------------------------------------------------------------------
-    @property
-    def handle(self):
-        """The asp_system* address (an int); raises NullPointerError once closed."""
-        if self._handle is None:
-            raise NullPointerError(_c.ASP_ERR_NULL_POINTER, "the system is closed", "System")
-        return self._handle
+    _destroy = lib.asp_system_destroy
+    _what = "system"
 
-    def close(self, _destroy=lib.asp_system_destroy):
-        """Destroys the system (asp_system_destroy) and drops its callback; idempotent."""
-        handle, self._handle = getattr(self, "_handle", None), None
-        if handle is not None:
-            _destroy(handle)
+    def _forget(self):
+        """Drops the potential callback the handle kept alive."""
         self._potential = None
-
-    __del__ = close
-
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        self.close()
 
     @property
     def grid(self):
