@@ -123,8 +123,6 @@ Surface measured_surface(const Scene &scene) {
   }
   // The scene's unit: its own, else the file's lateral unit, else the heights' unit.
   s.unit = !g.unit.empty() ? g.unit : !map.length_unit.empty() ? map.length_unit : height_unit;
-  if (!height_unit.empty() && s.unit.empty())
-    s.unit = height_unit;
   if (!height_unit.empty()) {
     const double factor = metres(height_unit) / metres(s.unit);
     for (double &h : map.heights) h *= factor;
@@ -146,6 +144,9 @@ Surface measured_surface(const Scene &scene) {
     s.lx = t.pixel_size * static_cast<double>(map.nx);
     s.ly = t.pixel_size * static_cast<double>(map.ny);
   } else if (file_has_size) {
+    if (map.length_unit.empty() && !s.unit.empty())
+      s.notes.push_back("box taken in " + s.unit + ": " + t.path +
+                        " does not give the unit of its size");
     s.lx = map.lx * file_factor;
     s.ly = std::isfinite(map.ly) && map.ly > 0.0
                ? map.ly * file_factor

@@ -7,6 +7,7 @@
 #include <mutex>
 
 #include "core/error.hpp"
+#include "core/loops.hpp"
 
 namespace asp {
 namespace {
@@ -32,14 +33,6 @@ int dimensions(std::int64_t nx, std::int64_t ny, int dims[2]) {
   return 1;
 }
 
-// Transforms of fewer points run on one thread: below this, waking threads costs more than
-// the work they would share (the same bound as the element-wise loops').
-constexpr std::int64_t threaded_points = 32768;
-
-// Plans made while it lives, of transforms of `points` points, run on `threads` threads
-// (FFTW's OpenMP threads, when the build has them; one otherwise). FFTW's thread count for
-// new plans is process-wide state: it is set under the planner lock and put back afterwards,
-// so that other FFTW users in the process keep theirs.
 // FFTW's threads, set up once (under the planner lock) before the first threaded plan or the
 // first wisdom import or export: wisdom may hold threaded plans, which FFTW reads only once
 // its threads are set up. False if the build has none or FFTW could not set them up.
@@ -52,13 +45,18 @@ bool fftw_threads_ready() {
 #endif
 }
 
+// Plans made while it lives, of transforms of `points` points, run on `threads` threads
+// (FFTW's OpenMP threads, when the build has them), or on one below loops::parallel_entries
+// points, where waking threads costs more than the work they would share. FFTW's thread count
+// for new plans is process-wide state: it is set under the planner lock and put back
+// afterwards, so that other FFTW users in the process keep theirs.
 class PlannerThreads {
  public:
   PlannerThreads(int threads, std::int64_t points) {
 #ifdef ASPERITY_FFTW_THREADS
     if (fftw_threads_ready()) {
       previous_ = fftw_planner_nthreads();
-      fftw_plan_with_nthreads(threads > 1 && points >= threaded_points ? threads : 1);
+      fftw_plan_with_nthreads(threads > 1 && points >= loops::parallel_entries ? threads : 1);
     }
 #else
     (void)threads;

@@ -38,26 +38,21 @@ inline int threads_for(std::int64_t n) {
   return threads > 1 && n >= parallel_entries ? threads : 1;
 }
 
-// body(begin, end, part) for the parts of [0, n), one per thread, contiguous and in order;
-// returns the number of parts (threads may be fewer than asked for).
+// body(begin, end) for the parts of [0, n), one per thread, contiguous.
 template <class Body>
-int in_parts(std::int64_t n, int threads, Body &&body) {
+void in_parts(std::int64_t n, int threads, Body &&body) {
 #ifdef _OPENMP
   if (threads > 1) {
-    int parts = 1;
 #pragma omp parallel num_threads(threads)
     {
-      const int part = omp_get_thread_num();
-      const int count = omp_get_num_threads();
-      if (part == 0) parts = count;
-      body(n * part / count, n * (part + 1) / count, part);
+      const std::int64_t part = omp_get_thread_num(), parts = omp_get_num_threads();
+      body(n * part / parts, n * (part + 1) / parts);
     }
-    return parts;
+    return;
   }
 #endif
   (void)threads;
-  body(std::int64_t{0}, n, 0);
-  return 1;
+  body(std::int64_t{0}, n);
 }
 
 // Reductions add up chunks of this many entries, then the chunks in order.
@@ -105,7 +100,7 @@ Partial reduce_in_parts(std::int64_t n, const Partial &initial, Reduce &&reduce,
 // body(i) for i in [0, n).
 template <class Body>
 void for_each(std::int64_t n, Body &&body) {
-  in_parts(n, threads_for(n), [&](std::int64_t begin, std::int64_t end, int) {
+  in_parts(n, threads_for(n), [&](std::int64_t begin, std::int64_t end) {
 #pragma omp simd
     for (std::int64_t i = begin; i < end; ++i) body(i);
   });
