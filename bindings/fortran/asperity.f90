@@ -112,7 +112,7 @@ module asperity
   public :: asp_status_string, asp_last_error_message, asp_version_string, asp_abi_version
   public :: asp_grid_create_1d, asp_grid_create_2d, asp_grid_destroy, asp_grid_get_shape, &
             asp_grid_get_box, asp_grid_set_fft_planning, asp_grid_set_threads, &
-            asp_grid_get_threads, asp_fft_export_wisdom, &
+            asp_grid_get_threads, asp_grid_get_slab, asp_fft_export_wisdom, &
             asp_fft_import_wisdom
   public :: asp_topography_flat, asp_topography_sphere, asp_topography_paraboloid, &
             asp_topography_sinusoid, asp_topography_double_sinewave, &
@@ -198,6 +198,15 @@ module asperity
       integer(c_int), intent(out) :: dimension
       integer(c_int64_t), intent(out) :: nx, ny, n_pixels
       integer(c_int) :: asp_grid_get_shape
+    end function
+    ! This process's rows of the grid: local_ny rows from row_offset on (0-based), local_pixels
+    ! values in every array passed for the grid. The whole grid unless it is distributed.
+    function asp_grid_get_slab(grid, local_ny, row_offset, local_pixels) &
+        bind(c, name='asp_grid_get_slab')
+      import :: c_int, c_int64_t, c_ptr
+      type(c_ptr), value :: grid
+      integer(c_int64_t), intent(out) :: local_ny, row_offset, local_pixels
+      integer(c_int) :: asp_grid_get_slab
     end function
     function asp_grid_get_box(grid, lx, ly) bind(c, name='asp_grid_get_box')
       import :: c_int, c_double, c_ptr

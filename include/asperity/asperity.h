@@ -186,6 +186,17 @@ ASP_EXPORT int asp_grid_set_fft_planning(asp_grid *grid, int planning);
 ASP_EXPORT int asp_grid_set_threads(asp_grid *grid, int threads);
 ASP_EXPORT int asp_grid_get_threads(const asp_grid *grid, int *threads);
 
+/* The rows of the grid this process holds: local_ny rows from row_offset on, local_pixels =
+ * nx*local_ny pixels. A grid of asperity_mpi.h is shared among the processes of a
+ * communicator, each holding a slab of whole rows; every other grid is held whole
+ * (local_ny = ny, row_offset = 0, local_pixels = n_pixels). Every array the library reads or
+ * fills for a grid (heights, fields) holds this process's rows, x fastest, local_pixels
+ * values; a process without rows passes a count of 0 (and any pointer). Sizes, box,
+ * n_pixels and every scalar result (means, forces, energies, statistics) are those of the
+ * whole grid. Any output pointer may be NULL. */
+ASP_EXPORT int asp_grid_get_slab(const asp_grid *grid, int64_t *local_ny, int64_t *row_offset,
+                                 int64_t *local_pixels);
+
 /* FFTW "wisdom": what planning with ASP_FFT_MEASURE has learnt in this process, saved to and
  * loaded from a file, so that repeated runs skip the planning. Importing adds to what is
  * known; a file written by another FFTW version or machine is accepted by FFTW only where it

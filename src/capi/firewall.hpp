@@ -10,6 +10,7 @@
 
 #include "asperity/asperity.h"
 #include "core/error.hpp"
+#include "core/grid.hpp"
 
 namespace asp {
 namespace capi {
@@ -36,6 +37,54 @@ int guarded(const char *function, Body &&body) noexcept {
   } catch (...) {
     return record_error(ASP_ERR_INTERNAL, function, "unknown exception");
   }
+}
+
+// Calls on a distributed grid, or on a system or solver made on one, are collective, and a
+// call that fails on any process fails on all, with the status and message of the first
+// failing one (naming it). A body takes an Agreement: it checks its arguments, which may
+// differ between processes (arrays, their counts, their values), then calls
+// agreement.checks_passed(), where the processes wait for each other's checks, and only then
+// does anything collective. What fails after that fails alike on every process, since it
+// depends only on what they share. On a serial grid (or a null one) the agreement does
+// nothing.
+class Agreement {
+ public:
+  explicit Agreement(const Grid *grid) : partition_(grid ? grid->partition() : nullptr) {}
+  void checks_passed() {
+    if (partition_ == nullptr || done_) return;
+    done_ = true;
+    partition_->agree(nullptr);
+  }
+  // This process failed before its checks passed: the others learn it at their agreement.
+  void failed(const Error &error) {
+    if (partition_ == nullptr || done_) return;
+    done_ = true;
+    partition_->agree(&error);
+  }
+
+ private:
+  const Partition *partition_;
+  bool done_ = false;
+};
+
+template <class Body>
+int guarded_on(const char *function, const Grid *grid, Body &&body) noexcept {
+  return guarded(function, [&] {
+    Agreement agreement(grid);
+    try {
+      body(agreement);
+    } catch (const Error &e) {
+      agreement.failed(e);
+      throw;
+    } catch (const std::bad_alloc &) {
+      agreement.failed(Error(Status::out_of_memory, "out of memory"));
+      throw;
+    } catch (const std::exception &e) {
+      agreement.failed(Error(Status::internal, e.what()));
+      throw;
+    }
+    agreement.checks_passed();
+  });
 }
 
 }  // namespace capi

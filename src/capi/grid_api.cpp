@@ -77,6 +77,17 @@ int asp_grid_get_threads(const asp_grid *grid, int *threads) {
   });
 }
 
+int asp_grid_get_slab(const asp_grid *grid, int64_t *local_ny, int64_t *row_offset,
+                      int64_t *local_pixels) {
+  return guarded("asp_grid_get_slab", [&] {
+    asp::require_not_null(grid, "grid");
+    const asp::Grid &g = *grid->grid;
+    if (local_ny) *local_ny = g.local_rows();
+    if (row_offset) *row_offset = g.row_offset();
+    if (local_pixels) *local_pixels = g.local_pixels();
+  });
+}
+
 int asp_fft_export_wisdom(const char *path) {
   return guarded("asp_fft_export_wisdom", [&] {
     asp::require_not_null(path, "path");

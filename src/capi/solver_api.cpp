@@ -9,6 +9,7 @@
 #include "core/checks.hpp"
 
 using asp::capi::guarded;
+using asp::capi::guarded_on;
 
 namespace {
 const asp::SolveReport &report_of(const asp_solver *solver) {
@@ -141,11 +142,14 @@ int asp_solver_set_history(asp_solver *solver, int on) {
 }
 
 int asp_solver_solve(asp_solver *solver, asp_system *system, int control, double value) {
-  return guarded("asp_solver_solve", [&] {
+  const asp::Grid *grid = system != nullptr ? &system->system->grid() : nullptr;
+  return guarded_on("asp_solver_solve", grid, [&](asp::capi::Agreement &agreement) {
     asp::require_not_null(solver, "solver");
     solver->solver->forget_last_solve();
     asp::require_not_null(system, "system");
-    solver->solver->solve(*system->system, control_of(control), value);
+    const asp::Control c = control_of(control);
+    agreement.checks_passed();
+    solver->solver->solve(*system->system, c, value);
   });
 }
 

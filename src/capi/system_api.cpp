@@ -10,14 +10,23 @@
 #include "core/checks.hpp"
 
 using asp::capi::guarded;
+using asp::capi::guarded_on;
+
+namespace {
+const asp::Grid *grid_of(const asp_system *system) {
+  return system != nullptr ? &system->system->grid() : nullptr;
+}
+const asp::Grid *grid_of(const asp_grid *grid) { return grid != nullptr ? grid->grid.get() : nullptr; }
+}  // namespace
 
 extern "C" {
 
 int asp_system_create(const asp_grid *grid, double contact_modulus, asp_system **out) {
   if (out != nullptr) *out = nullptr;
-  return guarded("asp_system_create", [&] {
+  return guarded_on("asp_system_create", grid_of(grid), [&](asp::capi::Agreement &agreement) {
     asp::require_not_null(grid, "grid");
     asp::require_not_null(out, "out");
+    agreement.checks_passed();
     std::unique_ptr<asp_system> handle(new asp_system);
     handle->system.reset(new asp::System(grid->grid, contact_modulus));
     *out = handle.release();
@@ -26,9 +35,10 @@ int asp_system_create(const asp_grid *grid, double contact_modulus, asp_system *
 
 int asp_system_create_free(const asp_grid *grid, double contact_modulus, asp_system **out) {
   if (out != nullptr) *out = nullptr;
-  return guarded("asp_system_create_free", [&] {
+  return guarded_on("asp_system_create_free", grid_of(grid), [&](asp::capi::Agreement &agreement) {
     asp::require_not_null(grid, "grid");
     asp::require_not_null(out, "out");
+    agreement.checks_passed();
     std::unique_ptr<asp_system> handle(new asp_system);
     handle->system.reset(
         new asp::System(grid->grid, contact_modulus, asp::SubstrateKind::free));
@@ -39,23 +49,24 @@ int asp_system_create_free(const asp_grid *grid, double contact_modulus, asp_sys
 void asp_system_destroy(asp_system *system) { delete system; }
 
 int asp_system_set_topography(asp_system *system, const double *heights, int64_t n) {
-  return guarded("asp_system_set_topography", [&] {
+  return guarded_on("asp_system_set_topography", grid_of(system), [&](asp::capi::Agreement &agreement) {
     asp::require_not_null(system, "system");
-    asp::require_array(heights, n, system->system->grid().n_pixels(), "heights");
+    asp::require_array(heights, n, system->system->grid().local_pixels(), "heights");
     asp::require_finite_array(heights, n, "heights");
+    agreement.checks_passed();
     system->system->set_topography(heights);
   });
 }
 
 int asp_system_set_k0(asp_system *system, double k0) {
-  return guarded("asp_system_set_k0", [&] {
+  return guarded_on("asp_system_set_k0", grid_of(system), [&](asp::capi::Agreement &) {
     asp::require_not_null(system, "system");
     system->system->set_k0(k0);
   });
 }
 
 int asp_system_set_adhesion(asp_system *system, double work_of_adhesion, double range) {
-  return guarded("asp_system_set_adhesion", [&] {
+  return guarded_on("asp_system_set_adhesion", grid_of(system), [&](asp::capi::Agreement &) {
     asp::require_not_null(system, "system");
     system->system->set_adhesion(work_of_adhesion, range);
   });
@@ -63,7 +74,7 @@ int asp_system_set_adhesion(asp_system *system, double work_of_adhesion, double 
 
 int asp_system_set_soft_wall(asp_system *system, double gamma_r, double rho_r, double gamma_a,
                              double rho_a) {
-  return guarded("asp_system_set_soft_wall", [&] {
+  return guarded_on("asp_system_set_soft_wall", grid_of(system), [&](asp::capi::Agreement &) {
     asp::require_not_null(system, "system");
     system->system->set_soft_wall(gamma_r, rho_r, gamma_a, rho_a);
   });
@@ -71,14 +82,14 @@ int asp_system_set_soft_wall(asp_system *system, double gamma_r, double rho_r, d
 
 int asp_system_set_lennard_jones(asp_system *system, double work_of_adhesion,
                                  double equilibrium_distance) {
-  return guarded("asp_system_set_lennard_jones", [&] {
+  return guarded_on("asp_system_set_lennard_jones", grid_of(system), [&](asp::capi::Agreement &) {
     asp::require_not_null(system, "system");
     system->system->set_lennard_jones(work_of_adhesion, equilibrium_distance);
   });
 }
 
 int asp_system_set_hard_wall(asp_system *system) {
-  return guarded("asp_system_set_hard_wall", [&] {
+  return guarded_on("asp_system_set_hard_wall", grid_of(system), [&](asp::capi::Agreement &) {
     asp::require_not_null(system, "system");
     system->system->set_hard_wall();
   });
@@ -90,14 +101,14 @@ static_assert(std::is_same<asp_potential_fn, asp::PotentialFunction>::value,
 
 int asp_system_set_potential(asp_system *system, asp_potential_fn fn, void *user_data,
                              int hard_wall) {
-  return guarded("asp_system_set_potential", [&] {
+  return guarded_on("asp_system_set_potential", grid_of(system), [&](asp::capi::Agreement &) {
     asp::require_not_null(system, "system");
     system->system->set_user_potential(fn, user_data, hard_wall != 0);
   });
 }
 
 int asp_system_set_reference_pressure(asp_system *system, double reference_pressure) {
-  return guarded("asp_system_set_reference_pressure", [&] {
+  return guarded_on("asp_system_set_reference_pressure", grid_of(system), [&](asp::capi::Agreement &) {
     asp::require_not_null(system, "system");
     asp::require_non_negative(reference_pressure, "reference_pressure");
     system->system->set_reference_pressure(reference_pressure);
@@ -105,17 +116,18 @@ int asp_system_set_reference_pressure(asp_system *system, double reference_press
 }
 
 int asp_system_reset(asp_system *system) {
-  return guarded("asp_system_reset", [&] {
+  return guarded_on("asp_system_reset", grid_of(system), [&](asp::capi::Agreement &) {
     asp::require_not_null(system, "system");
     system->system->reset_state();
   });
 }
 
 int asp_system_get(const asp_system *system, int key, double *value) {
-  return guarded("asp_system_get", [&] {
+  return guarded_on("asp_system_get", grid_of(system), [&](asp::capi::Agreement &agreement) {
     asp::require_not_null(system, "system");
     asp::require_not_null(value, "value");
     asp::capi::require_member(key, asp::capi::Family::scalar_key, "key");
+    agreement.checks_passed();
     const asp::System &s = *system->system;
     const asp::ExponentialAdhesion *adhesion = asp::exponential_adhesion(s.interaction());
     double result = 0.0;
@@ -153,11 +165,12 @@ int asp_system_get(const asp_system *system, int key, double *value) {
 }
 
 int asp_system_get_field(const asp_system *system, int field, double *values, int64_t n) {
-  return guarded("asp_system_get_field", [&] {
+  return guarded_on("asp_system_get_field", grid_of(system), [&](asp::capi::Agreement &agreement) {
     asp::require_not_null(system, "system");
     const asp::System &s = *system->system;
     asp::capi::require_member(field, asp::capi::Family::field, "field");
-    asp::require_array(values, n, s.grid().n_pixels(), "values");
+    asp::require_array(values, n, s.grid().local_pixels(), "values");
+    agreement.checks_passed();
     const asp::Field *source = nullptr;
     switch (field) {
       case ASP_FIELD_PRESSURE: source = &s.state().pressure; break;

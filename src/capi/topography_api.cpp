@@ -8,13 +8,15 @@
 #include "physics/surface_statistics.hpp"
 #include "physics/topography.hpp"
 
-using asp::capi::guarded;
+using asp::capi::guarded_on;
 
 namespace {
-// The grid of an output array of n heights, after checking both.
+const asp::Grid *grid_of(const asp_grid *grid) { return grid != nullptr ? grid->grid.get() : nullptr; }
+
+// The grid of an array of n heights (this process's rows), after checking both.
 const asp::Grid &grid_for(const asp_grid *grid, const void *heights, int64_t n) {
   asp::require_not_null(grid, "grid");
-  asp::require_array(heights, n, grid->grid->n_pixels(), "heights");
+  asp::require_array(heights, n, grid->grid->local_pixels(), "heights");
   return *grid->grid;
 }
 }  // namespace
@@ -22,37 +24,38 @@ const asp::Grid &grid_for(const asp_grid *grid, const void *heights, int64_t n) 
 extern "C" {
 
 int asp_topography_detrend(const asp_grid *grid, int mode, double *heights, int64_t n) {
-  return guarded("asp_topography_detrend", [&] {
+  return guarded_on("asp_topography_detrend", grid_of(grid), [&](asp::capi::Agreement &agreement) {
     const asp::Grid &g = grid_for(grid, heights, n);
     asp::capi::require_member(mode, asp::capi::Family::detrend, "mode");
     const asp::Detrend detrend = mode == ASP_DETREND_MEAN    ? asp::Detrend::mean
                                  : mode == ASP_DETREND_PLANE ? asp::Detrend::plane
                                                              : asp::Detrend::curvature;
+    asp::require_finite_array(heights, n, "heights");
+    agreement.checks_passed();
     asp::detrend_topography(g, detrend, heights);
   });
 }
 
 int asp_topography_flat(const asp_grid *grid, double *heights, int64_t n) {
-  return guarded("asp_topography_flat",
-                 [&] { asp::flat_topography(grid_for(grid, heights, n), heights); });
+  return guarded_on("asp_topography_flat", grid_of(grid), [&](asp::capi::Agreement &) { asp::flat_topography(grid_for(grid, heights, n), heights); });
 }
 
 int asp_topography_sphere(const asp_grid *grid, double radius, double *heights, int64_t n) {
-  return guarded("asp_topography_sphere", [&] {
+  return guarded_on("asp_topography_sphere", grid_of(grid), [&](asp::capi::Agreement &) {
     asp::sphere_topography(grid_for(grid, heights, n), radius, heights);
   });
 }
 
 int asp_topography_paraboloid(const asp_grid *grid, double radius, double *heights,
                               int64_t n) {
-  return guarded("asp_topography_paraboloid", [&] {
+  return guarded_on("asp_topography_paraboloid", grid_of(grid), [&](asp::capi::Agreement &) {
     asp::paraboloid_topography(grid_for(grid, heights, n), radius, heights);
   });
 }
 
 int asp_topography_sinusoid(const asp_grid *grid, double amplitude, int64_t periods_x,
                             int64_t periods_y, double *heights, int64_t n) {
-  return guarded("asp_topography_sinusoid", [&] {
+  return guarded_on("asp_topography_sinusoid", grid_of(grid), [&](asp::capi::Agreement &) {
     asp::sinusoid_topography(grid_for(grid, heights, n), amplitude, periods_x, periods_y,
                              heights);
   });
@@ -61,7 +64,7 @@ int asp_topography_sinusoid(const asp_grid *grid, double amplitude, int64_t peri
 int asp_topography_double_sinewave(const asp_grid *grid, double amplitude,
                                    double ripple_amplitude, int64_t ripple_periods,
                                    double *heights, int64_t n) {
-  return guarded("asp_topography_double_sinewave", [&] {
+  return guarded_on("asp_topography_double_sinewave", grid_of(grid), [&](asp::capi::Agreement &) {
     asp::double_sinewave_topography(grid_for(grid, heights, n), amplitude, ripple_amplitude,
                                     ripple_periods, heights);
   });
@@ -70,7 +73,7 @@ int asp_topography_double_sinewave(const asp_grid *grid, double amplitude,
 int asp_topography_self_affine(const asp_grid *grid, double hurst, double long_cutoff,
                                double rolloff, double short_cutoff, int normalise,
                                double target, int64_t seed, double *heights, int64_t n) {
-  return guarded("asp_topography_self_affine", [&] {
+  return guarded_on("asp_topography_self_affine", grid_of(grid), [&](asp::capi::Agreement &agreement) {
     const asp::Grid &g = grid_for(grid, heights, n);
     asp::capi::require_member(normalise, asp::capi::Family::normalisation, "normalise");
     asp::SelfAffineParameters p;
@@ -82,26 +85,29 @@ int asp_topography_self_affine(const asp_grid *grid, double hurst, double long_c
                                          : asp::RoughnessNorm::rms_slope;
     p.target = target;
     p.seed = static_cast<std::uint64_t>(seed);
+    agreement.checks_passed();
     asp::self_affine_topography(g, p, heights);
   });
 }
 
 int asp_topography_statistics(const asp_grid *grid, const double *heights, int64_t n,
                               double *rms_height, double *rms_slope, double *rms_curvature) {
-  return guarded("asp_topography_statistics", [&] {
+  return guarded_on("asp_topography_statistics", grid_of(grid), [&](asp::capi::Agreement &agreement) {
     const asp::Grid &g = grid_for(grid, heights, n);
     asp::require_finite_array(heights, n, "heights");
+    agreement.checks_passed();
     asp::surface_statistics(g, heights, rms_height, rms_slope, rms_curvature);
   });
 }
 
 int asp_topography_power_spectrum(const asp_grid *grid, const double *heights, int64_t n,
                                   int64_t n_bins, double *q, double *c) {
-  return guarded("asp_topography_power_spectrum", [&] {
+  return guarded_on("asp_topography_power_spectrum", grid_of(grid), [&](asp::capi::Agreement &agreement) {
     const asp::Grid &g = grid_for(grid, heights, n);
     asp::require_finite_array(heights, n, "heights");
     asp::require_not_null(q, "q");
     asp::require_not_null(c, "c");
+    agreement.checks_passed();
     asp::radial_power_spectrum(g, heights, n_bins, q, c);
   });
 }

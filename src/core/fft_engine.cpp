@@ -7,21 +7,10 @@
 #include <mutex>
 
 #include "core/error.hpp"
-#include "core/loops.hpp"
+#include "core/fft_planner.hpp"
 
 namespace asp {
 namespace {
-// FFTW's planner is not thread-safe; every plan creation and destruction and every wisdom
-// operation in the library goes through this lock. Executing existing plans is thread-safe.
-std::mutex &planner_mutex() {
-  static std::mutex m;
-  return m;
-}
-
-unsigned flags_of(FftPlanning planning) {
-  return planning == FftPlanning::measure ? FFTW_MEASURE : FFTW_ESTIMATE;
-}
-
 // FFTW's row-major dimensions of a field of nx x ny pixels, x fastest.
 int dimensions(std::int64_t nx, std::int64_t ny, int dims[2]) {
   if (ny > 1) {
@@ -32,48 +21,6 @@ int dimensions(std::int64_t nx, std::int64_t ny, int dims[2]) {
   dims[0] = static_cast<int>(nx);
   return 1;
 }
-
-// FFTW's threads, set up once (under the planner lock) before the first threaded plan or the
-// first wisdom import or export: wisdom may hold threaded plans, which FFTW reads only once
-// its threads are set up. False if the build has none or FFTW could not set them up.
-bool fftw_threads_ready() {
-#ifdef ASPERITY_FFTW_THREADS
-  static const bool ready = fftw_init_threads() != 0;
-  return ready;
-#else
-  return false;
-#endif
-}
-
-// Plans made while it lives, of transforms of `points` points, run on `threads` threads
-// (FFTW's OpenMP threads, when the build has them), or on one below loops::parallel_entries
-// points, where waking threads costs more than the work they would share. FFTW's thread count
-// for new plans is process-wide state: it is set under the planner lock and put back
-// afterwards, so that other FFTW users in the process keep theirs.
-class PlannerThreads {
- public:
-  PlannerThreads(int threads, std::int64_t points) {
-#ifdef ASPERITY_FFTW_THREADS
-    if (fftw_threads_ready()) {
-      previous_ = fftw_planner_nthreads();
-      fftw_plan_with_nthreads(threads > 1 && points >= loops::parallel_entries ? threads : 1);
-    }
-#else
-    (void)threads;
-    (void)points;
-#endif
-  }
-  ~PlannerThreads() {
-#ifdef ASPERITY_FFTW_THREADS
-    if (previous_ > 0) fftw_plan_with_nthreads(previous_);
-#endif
-  }
-  PlannerThreads(const PlannerThreads &) = delete;
-  PlannerThreads &operator=(const PlannerThreads &) = delete;
-
- private:
-  int previous_ = 0;
-};
 
 void destroy(void *plan) {
   if (plan != nullptr) fftw_destroy_plan(static_cast<fftw_plan>(plan));
@@ -96,18 +43,18 @@ RealFft::RealFft(std::int64_t nx, std::int64_t ny, FftPlanning planning, int thr
   Spectrum spectrum(static_cast<std::size_t>((nx / 2 + 1) * ny));
   auto *c = reinterpret_cast<fftw_complex *>(spectrum.data());
 
-  std::lock_guard<std::mutex> lock(planner_mutex());
-  const PlannerThreads planner_threads(threads, nx * ny);
-  fftw_plan r2c = fftw_plan_dft_r2c(rank, dims, real.data(), c, flags_of(planning));
+  std::lock_guard<std::mutex> lock(fft_planner::mutex());
+  const fft_planner::PlannerThreads planner_threads(threads, nx * ny);
+  fftw_plan r2c = fftw_plan_dft_r2c(rank, dims, real.data(), c, fft_planner::flags_of(planning));
   fftw_plan c2r =
-      fftw_plan_dft_c2r(rank, dims, c, real.data(), flags_of(planning) | FFTW_DESTROY_INPUT);
+      fftw_plan_dft_c2r(rank, dims, c, real.data(), fft_planner::flags_of(planning) | FFTW_DESTROY_INPUT);
   require_plans(r2c, c2r);
   r2c_ = r2c;
   c2r_ = c2r;
 }
 
 RealFft::~RealFft() {
-  std::lock_guard<std::mutex> lock(planner_mutex());
+  std::lock_guard<std::mutex> lock(fft_planner::mutex());
   destroy(r2c_);
   destroy(c2r_);
 }
@@ -132,10 +79,10 @@ PaddedRealFft::PaddedRealFft(std::int64_t nx, std::int64_t ny, FftPlanning plann
   Field real(static_cast<std::size_t>(2 * nx * ny));
   Spectrum spectrum(static_cast<std::size_t>((nx + 1) * 2 * ny));
   auto *c = reinterpret_cast<fftw_complex *>(spectrum.data());
-  const unsigned flags = flags_of(planning);
+  const unsigned flags = fft_planner::flags_of(planning);
 
-  std::lock_guard<std::mutex> lock(planner_mutex());
-  const PlannerThreads planner_threads(threads, 4 * nx * ny);
+  std::lock_guard<std::mutex> lock(fft_planner::mutex());
+  const fft_planner::PlannerThreads planner_threads(threads, 4 * nx * ny);
   // Rows along x: ny of them, 2nx reals each, contiguous; out nx+1 complex each, contiguous.
   fftw_plan r2c = fftw_plan_many_dft_r2c(1, &width, rows, real.data(), nullptr, 1, width, c,
                                          nullptr, 1, columns, flags);
@@ -160,7 +107,7 @@ PaddedRealFft::PaddedRealFft(std::int64_t nx, std::int64_t ny, FftPlanning plann
 }
 
 PaddedRealFft::~PaddedRealFft() {
-  std::lock_guard<std::mutex> lock(planner_mutex());
+  std::lock_guard<std::mutex> lock(fft_planner::mutex());
   destroy(rows_r2c_);
   destroy(rows_c2r_);
   destroy(columns_forward_);
@@ -199,19 +146,19 @@ HalfComplexFft::HalfComplexFft(std::int64_t nx, std::int64_t ny, FftPlanning pla
   const fftw_r2r_kind backward_kinds[2] = {FFTW_HC2R, FFTW_HC2R};
   Field in(static_cast<std::size_t>(nx * ny)), out(static_cast<std::size_t>(nx * ny));
 
-  std::lock_guard<std::mutex> lock(planner_mutex());
-  const PlannerThreads planner_threads(threads, nx * ny);
+  std::lock_guard<std::mutex> lock(fft_planner::mutex());
+  const fft_planner::PlannerThreads planner_threads(threads, nx * ny);
   fftw_plan r2hc =
-      fftw_plan_r2r(rank, dims, in.data(), out.data(), forward_kinds, flags_of(planning));
+      fftw_plan_r2r(rank, dims, in.data(), out.data(), forward_kinds, fft_planner::flags_of(planning));
   fftw_plan hc2r = fftw_plan_r2r(rank, dims, out.data(), in.data(), backward_kinds,
-                                 flags_of(planning) | FFTW_DESTROY_INPUT);
+                                 fft_planner::flags_of(planning) | FFTW_DESTROY_INPUT);
   require_plans(r2hc, hc2r);
   r2hc_ = r2hc;
   hc2r_ = hc2r;
 }
 
 HalfComplexFft::~HalfComplexFft() {
-  std::lock_guard<std::mutex> lock(planner_mutex());
+  std::lock_guard<std::mutex> lock(fft_planner::mutex());
   destroy(r2hc_);
   destroy(hc2r_);
 }
@@ -224,16 +171,55 @@ void HalfComplexFft::backward(double *coefficients, double *real) const {
   fftw_execute_r2r(static_cast<fftw_plan>(hc2r_), coefficients, real);
 }
 
+LineFft::LineFft(std::int64_t n) {
+  Spectrum line(static_cast<std::size_t>(n));
+  auto *c = reinterpret_cast<fftw_complex *>(line.data());
+  std::lock_guard<std::mutex> lock(fft_planner::mutex());
+  const fft_planner::PlannerThreads one_thread(1, 0);
+  plan_ = fftw_plan_dft_1d(static_cast<int>(n), c, c, FFTW_BACKWARD, FFTW_ESTIMATE);
+  if (plan_ == nullptr) throw Error(Status::fft, "FFTW could not plan a transform of this length");
+}
+
+LineFft::~LineFft() {
+  std::lock_guard<std::mutex> lock(fft_planner::mutex());
+  destroy(plan_);
+}
+
+void LineFft::backward(Complex *line) const {
+  auto *c = reinterpret_cast<fftw_complex *>(line);
+  fftw_execute_dft(static_cast<fftw_plan>(plan_), c, c);
+}
+
+RealLineFft::RealLineFft(std::int64_t n) {
+  Spectrum half(static_cast<std::size_t>(n / 2 + 1));
+  Field real(static_cast<std::size_t>(n));
+  std::lock_guard<std::mutex> lock(fft_planner::mutex());
+  const fft_planner::PlannerThreads one_thread(1, 0);
+  plan_ = fftw_plan_dft_c2r_1d(static_cast<int>(n), reinterpret_cast<fftw_complex *>(half.data()),
+                               real.data(), FFTW_ESTIMATE | FFTW_DESTROY_INPUT);
+  if (plan_ == nullptr) throw Error(Status::fft, "FFTW could not plan a transform of this length");
+}
+
+RealLineFft::~RealLineFft() {
+  std::lock_guard<std::mutex> lock(fft_planner::mutex());
+  destroy(plan_);
+}
+
+void RealLineFft::backward(Complex *half, double *real) const {
+  fftw_execute_dft_c2r(static_cast<fftw_plan>(plan_), reinterpret_cast<fftw_complex *>(half),
+                       real);
+}
+
 void export_fft_wisdom(const std::string &path) {
-  std::lock_guard<std::mutex> lock(planner_mutex());
-  fftw_threads_ready();
+  std::lock_guard<std::mutex> lock(fft_planner::mutex());
+  fft_planner::threads_ready();
   if (fftw_export_wisdom_to_filename(path.c_str()) == 0)
     throw Error(Status::io, "argument 'path': cannot write FFTW wisdom to '" + path + "'");
 }
 
 void import_fft_wisdom(const std::string &path) {
-  std::lock_guard<std::mutex> lock(planner_mutex());
-  fftw_threads_ready();
+  std::lock_guard<std::mutex> lock(fft_planner::mutex());
+  fft_planner::threads_ready();
   if (fftw_import_wisdom_from_filename(path.c_str()) == 0)
     throw Error(Status::io,
                 "argument 'path': cannot read FFTW wisdom from '" + path +

@@ -16,17 +16,28 @@ namespace asp {
 
 enum class FftPlanning { estimate, measure };
 
-// Real-to-complex and back: the half spectrum is halved along x, S[kx + (nx/2+1)*ky].
-class RealFft {
+// The real-to-complex transform of a grid and back, on this process's rows of it: the half
+// spectrum is halved along x, S[kx + (nx/2+1)*ky]. Serial (RealFft) or distributed over
+// processes (core/mpi_partition.cpp), the formulations do not tell which.
+class RealTransform {
+ public:
+  virtual ~RealTransform() = default;
+  virtual void forward(const double *real, Complex *spectrum) const = 0;
+  // Destroys the spectrum it reads.
+  virtual void backward(Complex *spectrum, double *real) const = 0;
+};
+
+// The whole grid in this process.
+class RealFft final : public RealTransform {
  public:
   RealFft(std::int64_t nx, std::int64_t ny, FftPlanning planning, int threads = 1);
   ~RealFft();
   RealFft(const RealFft &) = delete;
   RealFft &operator=(const RealFft &) = delete;
 
-  void forward(const double *real, Complex *spectrum) const;
+  void forward(const double *real, Complex *spectrum) const override;
   // Destroys the spectrum it reads (FFTW's multi-dimensional c2r does).
-  void backward(Complex *spectrum, double *real) const;
+  void backward(Complex *spectrum, double *real) const override;
 
  private:
   void *r2c_ = nullptr;  // fftw_plan, kept opaque so that fftw3.h stays out of the headers
@@ -76,6 +87,35 @@ class HalfComplexFft {
  private:
   void *r2hc_ = nullptr;
   void *hc2r_ = nullptr;
+};
+
+// One-dimensional backward transforms along one axis at a time, complex in place (LineFft)
+// and half-complex to real (RealLineFft), planned with FFTW_ESTIMATE: the plan, and so the
+// rounding, depends only on the length, the same on every process and in every run. Arrays
+// come from the library's allocator. Unnormalised, as all transforms here.
+class LineFft {
+ public:
+  explicit LineFft(std::int64_t n);
+  ~LineFft();
+  LineFft(const LineFft &) = delete;
+  LineFft &operator=(const LineFft &) = delete;
+  void backward(Complex *line) const;
+
+ private:
+  void *plan_ = nullptr;
+};
+
+class RealLineFft {
+ public:
+  explicit RealLineFft(std::int64_t n);
+  ~RealLineFft();
+  RealLineFft(const RealLineFft &) = delete;
+  RealLineFft &operator=(const RealLineFft &) = delete;
+  // n/2 + 1 complex numbers in (destroyed), n reals out.
+  void backward(Complex *half, double *real) const;
+
+ private:
+  void *plan_ = nullptr;
 };
 
 // FFTW's accumulated planning knowledge, to and from a file (throws Error(io) naming it).

@@ -61,14 +61,62 @@ std::shared_ptr<Grid> Grid::create(int dimension, std::int64_t nx, std::int64_t 
   return std::shared_ptr<Grid>(new Grid(dimension, nx, ny, lx, ly));
 }
 
+std::shared_ptr<Grid> Grid::create_distributed(std::shared_ptr<const Partition> partition,
+                                               std::int64_t nx, std::int64_t ny, double lx,
+                                               double ly) {
+  // Every process checks its own arguments, then all agree, so that a bad argument on one
+  // of them is reported on each, and then that they were given the same grid.
+  std::shared_ptr<Grid> grid;
+  try {
+    grid = create(2, nx, ny, lx, ly);
+  } catch (const Error &e) {
+    partition->agree(&e);
+  }
+  partition->agree(nullptr);
+  const double shape[4] = {static_cast<double>(nx), static_cast<double>(ny), lx, ly};
+  if (!partition->same_everywhere(shape, 4))
+    throw Error(Status::invalid_argument,
+                "arguments 'nx', 'ny', 'lx' and 'ly' differ between the processes: a "
+                "distributed grid is one grid, created with the same sizes and box on each");
+  const RowSlab slab = partition->slab(nx, ny);
+  const int threads = environment_threads();
+  grid->threads_ = threads > 0 ? threads : 1;
+  grid->local_rows_ = slab.rows;
+  grid->row_offset_ = slab.offset;
+  grid->partition_ = std::move(partition);
+  return grid;
+}
+
 Grid::Grid(int dimension, std::int64_t nx, std::int64_t ny, double lx, double ly)
-    : dimension_(dimension), nx_(nx), ny_(ny), lx_(lx), ly_(ly), threads_(default_threads()) {}
+    : dimension_(dimension),
+      nx_(nx),
+      ny_(ny),
+      lx_(lx),
+      ly_(ly),
+      threads_(default_threads()),
+      local_rows_(ny) {}
 
 SpectralLayout Grid::half_spectrum() const {
-  return SpectralLayout(Packing::half_spectrum, nx_, ny_, lx_, ly_);
+  return SpectralLayout(Packing::half_spectrum, nx_, ny_, lx_, ly_, local_rows_, row_offset_);
+}
+
+void Grid::require_serial(const char *what) const {
+  if (partition_)
+    throw Error(Status::unsupported,
+                std::string("argument 'grid' is distributed over processes, and ") + what +
+                    " is not: use a grid of one process");
+}
+
+const RealTransform &Grid::fft() const {
+  if (!partition_) return real_fft(nx_, ny_);
+  std::lock_guard<std::mutex> lock(plans_mutex_);
+  if (!distributed_plan_)
+    distributed_plan_ = partition_->real_transform(nx_, ny_, planning_, threads_);
+  return *distributed_plan_;
 }
 
 const RealFft &Grid::real_fft(std::int64_t nx, std::int64_t ny) const {
+  require_serial("the transform of another shape (a free substrate's padded grid)");
   std::lock_guard<std::mutex> lock(plans_mutex_);
   const auto key = std::make_tuple(nx, ny);
   auto found = real_plans_.find(key);
@@ -78,12 +126,14 @@ const RealFft &Grid::real_fft(std::int64_t nx, std::int64_t ny) const {
 }
 
 const HalfComplexFft &Grid::half_complex_fft() const {
+  require_serial("the half-complex transform");
   std::lock_guard<std::mutex> lock(plans_mutex_);
   if (!half_complex_plan_) half_complex_plan_.reset(new HalfComplexFft(nx_, ny_, planning_, threads_));
   return *half_complex_plan_;
 }
 
 const PaddedRealFft &Grid::padded_fft() const {
+  require_serial("the padded transform of a free substrate");
   std::lock_guard<std::mutex> lock(plans_mutex_);
   if (!padded_plan_) padded_plan_.reset(new PaddedRealFft(nx_, ny_, planning_, threads_));
   return *padded_plan_;
@@ -91,7 +141,7 @@ const PaddedRealFft &Grid::padded_fft() const {
 
 void Grid::set_fft_planning(FftPlanning planning) {
   std::lock_guard<std::mutex> lock(plans_mutex_);
-  if (!real_plans_.empty() || half_complex_plan_ || padded_plan_)
+  if (!real_plans_.empty() || half_complex_plan_ || padded_plan_ || distributed_plan_)
     throw Error(Status::invalid_state,
                 "the grid's FFT plans already exist; set the planning right after creating it");
   planning_ = planning;
@@ -102,7 +152,7 @@ void Grid::set_threads(int threads) {
     throw Error(Status::invalid_argument,
                 "argument 'threads' is " + std::to_string(threads) + ": must be at least 1");
   std::lock_guard<std::mutex> lock(plans_mutex_);
-  if (!real_plans_.empty() || half_complex_plan_ || padded_plan_)
+  if (!real_plans_.empty() || half_complex_plan_ || padded_plan_ || distributed_plan_)
     throw Error(Status::invalid_state,
                 "the grid's FFT plans already exist; set the threads right after creating it");
   threads_ = threads;
@@ -120,7 +170,8 @@ FftPlanning Grid::fft_planning() const {
 
 bool Grid::has_fft_plans() const {
   std::lock_guard<std::mutex> lock(plans_mutex_);
-  return !real_plans_.empty() || half_complex_plan_ != nullptr || padded_plan_ != nullptr;
+  return !real_plans_.empty() || half_complex_plan_ != nullptr || padded_plan_ != nullptr ||
+         distributed_plan_ != nullptr;
 }
 
 }  // namespace asp

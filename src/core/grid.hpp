@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // A periodic 1D or 2D grid: sizes, box, spectral layouts and the FFT plans of its shapes.
 //
+// A 2D grid may be distributed over processes (create_distributed): each then holds a slab
+// of rows, and every field and spectrum of the library on it is that slab (local_pixels(),
+// local_spectral()); sizes, box and n_pixels() stay those of the whole grid.
+//
 // Grids are shared: every system made on a grid holds a reference, so that the handles of the
 // C API may be destroyed in any order.
 #pragma once
@@ -13,6 +17,7 @@
 
 #include "core/aligned_field.hpp"
 #include "core/fft_engine.hpp"
+#include "core/partition.hpp"
 #include "core/reductions.hpp"
 #include "core/spectral_layout.hpp"
 #include "core/threads.hpp"
@@ -26,6 +31,12 @@ class Grid {
   // have ny = 1 and ly = 1, so that the pixel "area" lx/nx is the pixel length.
   static std::shared_ptr<Grid> create(int dimension, std::int64_t nx, std::int64_t ny,
                                       double lx, double ly);
+  // A 2D grid whose rows are shared among the processes of `partition` (collective). Throws
+  // Error naming the bad argument, on every process, also when the processes disagree on
+  // the sizes or the box.
+  static std::shared_ptr<Grid> create_distributed(std::shared_ptr<const Partition> partition,
+                                                  std::int64_t nx, std::int64_t ny, double lx,
+                                                  double ly);
   Grid(const Grid &) = delete;
   Grid &operator=(const Grid &) = delete;
 
@@ -40,17 +51,27 @@ class Grid {
     return (lx_ / static_cast<double>(nx_)) * (ly_ / static_cast<double>(ny_));
   }
 
-  // The r2c half spectrum of the grid: kx in [0, nx/2], ky in [0, ny).
-  SpectralLayout half_spectrum() const;
-  std::int64_t n_spectral() const { return (nx_ / 2 + 1) * ny_; }
+  // This process's rows: all of them unless the grid is distributed.
+  std::int64_t local_rows() const { return local_rows_; }
+  std::int64_t row_offset() const { return row_offset_; }
+  std::int64_t local_pixels() const { return nx_ * local_rows_; }
+  // The partition of a distributed grid, null otherwise.
+  const Partition *partition() const { return partition_.get(); }
 
-  Field make_field() const { return Field(static_cast<std::size_t>(n_pixels()), 0.0); }
-  Spectrum make_spectrum() const { return Spectrum(static_cast<std::size_t>(n_spectral())); }
+  // The r2c half spectrum of the grid, this process's rows of it: kx in [0, nx/2], ky in
+  // [row_offset, row_offset + local_rows).
+  SpectralLayout half_spectrum() const;
+  std::int64_t local_spectral() const { return (nx_ / 2 + 1) * local_rows_; }
+
+  // Fields and spectra of this process's rows.
+  Field make_field() const { return Field(static_cast<std::size_t>(local_pixels()), 0.0); }
+  Spectrum make_spectrum() const { return Spectrum(static_cast<std::size_t>(local_spectral())); }
 
   // Plans, made on first use under the planner lock and kept for the grid's life, one per
-  // (shape, kind): the grid's own shape, or another one such as the padded 2nx x 2ny of a
-  // non-periodic substrate.
-  const RealFft &fft() const { return real_fft(nx_, ny_); }
+  // (shape, kind): the grid's own shape (distributed with the grid), or another one such as
+  // the padded 2nx x 2ny of a non-periodic substrate (serial grids only: those throw
+  // Error(unsupported) on a distributed grid).
+  const RealTransform &fft() const;
   const RealFft &real_fft(std::int64_t nx, std::int64_t ny) const;
   const HalfComplexFft &half_complex_fft() const;
   // The grid's box on the grid zero-padded to 2nx x 2ny (2D grids).
@@ -63,17 +84,24 @@ class Grid {
   int threads() const;
   bool has_fft_plans() const;
 
-  const Reductions &reductions() const { return reductions_; }
+  // Sums and maxima over the processes (the identity on a serial grid).
+  const Reductions &reductions() const {
+    return partition_ ? static_cast<const Reductions &>(*partition_) : reductions_;
+  }
 
  private:
   Grid(int dimension, std::int64_t nx, std::int64_t ny, double lx, double ly);
+  void require_serial(const char *what) const;
 
   int dimension_;
   std::int64_t nx_, ny_;
   double lx_, ly_;
   FftPlanning planning_ = FftPlanning::measure;
   int threads_;
+  std::int64_t local_rows_, row_offset_ = 0;
+  std::shared_ptr<const Partition> partition_;
   mutable std::mutex plans_mutex_;
+  mutable std::unique_ptr<RealTransform> distributed_plan_;
   mutable std::map<std::tuple<std::int64_t, std::int64_t>, std::unique_ptr<RealFft>> real_plans_;
   mutable std::unique_ptr<HalfComplexFft> half_complex_plan_;
   mutable std::unique_ptr<PaddedRealFft> padded_plan_;

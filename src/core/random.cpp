@@ -18,6 +18,11 @@ Random::Random(std::uint64_t seed) {
   for (auto &s : s_) s = splitmix64(seed);
 }
 
+Random Random::keyed(std::uint64_t seed, std::uint64_t counter) {
+  std::uint64_t mixed = counter;
+  return Random(seed ^ splitmix64(mixed));
+}
+
 std::uint64_t Random::next_u64() {
   const std::uint64_t result = rotl(s_[1] * 5, 7) * 9;
   const std::uint64_t t = s_[1] << 17;

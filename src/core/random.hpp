@@ -11,6 +11,9 @@ namespace asp {
 class Random {
  public:
   explicit Random(std::uint64_t seed);
+  // A stream of its own for each counter under one seed: what it draws depends on the seed
+  // and the counter only, not on what was drawn before (a counter-based generator).
+  static Random keyed(std::uint64_t seed, std::uint64_t counter);
   std::uint64_t next_u64();
   double uniform();   // in (0, 1): never 0, so that log() is safe
   double gaussian();  // standard normal, Box-Muller

@@ -13,6 +13,10 @@ class Reductions {
   // In place: values[k] becomes the sum (max) of values[k] over all parts of the grid.
   virtual void combine_sums(double *values, int count) const = 0;
   virtual void combine_maxima(double *values, int count) const = 0;
+  // One candidate per part, a key and a payload of count values (key = +infinity for none):
+  // the candidate with the smallest key (the first part's on ties) wins, and key and payload
+  // become its on every part. Returns whether it was this part's.
+  virtual bool select_smallest(double &key, double *payload, int count) const = 0;
 };
 
 // The whole grid lives in this process.
@@ -20,6 +24,7 @@ class LocalReductions final : public Reductions {
  public:
   void combine_sums(double *, int) const override {}
   void combine_maxima(double *, int) const override {}
+  bool select_smallest(double &, double *, int) const override { return true; }
 };
 
 }  // namespace asp

@@ -14,6 +14,10 @@
 //    sum_i f_i^2 = (1/N) sum_k weight_k c_k^2, N = nx*ny.
 // In both, sum over entries of weight * |entry|^2 equals N times the sum of squares of the
 // field (Parseval), and K~(|q|) is diagonal.
+//
+// On a distributed grid a layout describes this process's rows ky in [row_offset,
+// row_offset + rows) (stored from index 0); its sums are over those rows, and the caller
+// combines them across processes (Grid::reductions()).
 #pragma once
 
 #include <algorithm>
@@ -28,12 +32,16 @@ enum class Packing { half_spectrum, half_complex };
 
 class SpectralLayout {
  public:
-  // A field of nx x ny pixels (ny = 1 in 1D) on a box lx x ly.
-  SpectralLayout(Packing packing, std::int64_t nx, std::int64_t ny, double lx, double ly);
+  // A field of nx x ny pixels (ny = 1 in 1D) on a box lx x ly; of it, local_rows rows from
+  // row_offset on (all of them by default).
+  SpectralLayout(Packing packing, std::int64_t nx, std::int64_t ny, double lx, double ly,
+                 std::int64_t local_rows = -1, std::int64_t row_offset = 0);
 
   Packing packing() const { return packing_; }
   // Number of stored entries (complex for half_spectrum, real for half_complex).
-  std::int64_t size() const { return row_length_ * ny_; }
+  std::int64_t size() const { return row_length_ * rows_; }
+  // Whether stored entry k is the q = 0 mode (the mean), which only one process holds.
+  bool is_mean(std::int64_t k) const { return k == 0 && row_offset_ == 0; }
 
   // sum over the stored entries of weight_k * value(k): Parseval sums, row by row so that the
   // inner loop vectorises (every entry of a row counts twice, minus the edge entries).
@@ -43,11 +51,11 @@ class SpectralLayout {
     // several threads when the spectrum is large, with a sum that does not depend on them.
     const std::int64_t rows = std::max<std::int64_t>(1, loops::chunk_entries / row_length_);
     return loops::reduce_in_chunks(
-        ny_, rows, loops::threads_for(size()), 0.0,
+        rows_, rows, loops::threads_for(size()), 0.0,
         [&](std::int64_t first, std::int64_t end, double &part) {
           double total = 0.0;
-          for (std::int64_t ky = first; ky < end; ++ky) {
-            const std::int64_t row = row_length_ * ky;
+          for (std::int64_t local = first; local < end; ++local) {
+            const std::int64_t row = row_length_ * local, ky = row_offset_ + local;
             double sum = 0.0;
 #pragma omp simd reduction(+ : sum)
             for (std::int64_t kx = 0; kx < row_length_; ++kx) sum += value(row + kx);
@@ -66,8 +74,8 @@ class SpectralLayout {
   template <class Value>
   double single_entries_sum(Value &&value) const {
     double total = 0.0;
-    for (std::int64_t ky = 0; ky < ny_; ++ky) {
-      const std::int64_t row = row_length_ * ky;
+    for (std::int64_t local = 0; local < rows_; ++local) {
+      const std::int64_t row = row_length_ * local;
       total += value(row);
       if (second_single_ > 0) total += value(row + second_single_);
     }
@@ -77,10 +85,11 @@ class SpectralLayout {
   // visit(k, q, weight) for every stored entry k, in storage order.
   template <class Visit>
   void for_each(Visit &&visit) const {
-    for (std::int64_t ky = 0; ky < ny_; ++ky) {
+    for (std::int64_t local = 0; local < rows_; ++local) {
+      const std::int64_t ky = row_offset_ + local;
       const double qy = wavenumber(axis_frequency(ky, ny_), ly_);
       const double wy = packing_ == Packing::half_complex ? axis_weight(ky, ny_) : 1.0;
-      const std::int64_t row = row_length_ * ky;
+      const std::int64_t row = row_length_ * local;
       for (std::int64_t kx = 0; kx < row_length_; ++kx) {
         const double qx = wavenumber(packing_ == Packing::half_complex ? axis_frequency(kx, nx_)
                                                                         : kx,
@@ -108,6 +117,7 @@ class SpectralLayout {
   Packing packing_;
   std::int64_t nx_, ny_;
   double lx_, ly_;
+  std::int64_t rows_, row_offset_;
   std::int64_t row_length_;
   // Index in a row of the entry besides 0 that stands for one mode along x (the Nyquist
   // frequency of an even nx: last of an r2c row, middle of an R2HC row), or 0 if none.

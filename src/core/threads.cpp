@@ -12,7 +12,7 @@ thread_local int current_threads = 1;
 
 }  // namespace
 
-int default_threads() {
+int environment_threads() {
   if (const char *text = std::getenv("OMP_NUM_THREADS")) {
     char *end = nullptr;
     errno = 0;
@@ -21,6 +21,11 @@ int default_threads() {
     if (end != text && errno == 0 && value > 0 && value <= 4096 && (*end == '\0' || *end == ','))
       return static_cast<int>(value);
   }
+  return 0;
+}
+
+int default_threads() {
+  if (const int threads = environment_threads()) return threads;
   const unsigned processors = std::thread::hardware_concurrency();
   return processors > 0 ? static_cast<int>(processors) : 1;
 }

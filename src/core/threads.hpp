@@ -10,6 +10,9 @@ namespace asp {
 // The default thread count of a new grid: OMP_NUM_THREADS when it holds a positive whole
 // number (its first entry, for a list), else the number of processors.
 int default_threads();
+// OMP_NUM_THREADS when it holds a positive whole number (its first entry), else 0. The
+// default of a distributed grid, whose processes usually have a core each, or 1.
+int environment_threads();
 
 // The thread count of this calling thread's loops (1 outside a ThreadScope).
 int loop_threads();

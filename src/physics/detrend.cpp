@@ -71,7 +71,8 @@ Terms solve_normal_equations(std::array<Terms, largest_basis> g, Terms b, int k)
 }  // namespace
 
 void detrend_topography(const Grid &grid, Detrend mode, double *heights) {
-  const std::int64_t n = grid.n_pixels(), nx = grid.nx(), ny = grid.ny();
+  const std::int64_t n = grid.local_pixels(), nx = grid.nx(), ny = grid.ny();
+  const std::int64_t first_row = grid.row_offset();
   require_finite_array(heights, n, "heights");
   const int dimension = grid.dimension(), k = basis_size(mode, dimension);
   // Pixel centres relative to the box's centre, over half the box: in (-1, 1).
@@ -79,7 +80,7 @@ void detrend_topography(const Grid &grid, Detrend mode, double *heights) {
   const double per_x = 2.0 / static_cast<double>(nx), per_y = 2.0 / static_cast<double>(ny);
   const auto terms_at = [&](std::int64_t i) {
     const double x = (static_cast<double>(i % nx) - cx) * per_x;
-    const double y = (static_cast<double>(i / nx) - cy) * per_y;
+    const double y = (static_cast<double>(first_row + i / nx) - cy) * per_y;
     return basis(x, y, dimension);
   };
 

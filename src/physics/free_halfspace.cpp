@@ -51,6 +51,10 @@ FreeHalfSpace::FreeHalfSpace(const Grid &grid, double contact_modulus)
                 "the logarithm of the distance and is defined only relative to a reference "
                 "point, so a 1D free substrate has no unique force-penetration relation; use a "
                 "periodic system in 1D");
+  if (grid.partition() != nullptr)
+    throw Error(Status::unsupported,
+                "argument 'grid' is distributed over processes: the free (non-periodic) "
+                "half-space is not; use a periodic system, or a grid of one process");
   require_positive(contact_modulus, "contact_modulus");
 
   // The largest coefficient (a pixel on itself), the smallest (the farthest offset of the

@@ -20,7 +20,7 @@ const char *interaction_name(InteractionKind kind) {
 
 double Interaction::contact_fraction(const Grid &grid, const ContactState &state) const {
   const double *p = state.pressure.data();
-  const double count = loops::sum(grid.reductions(), grid.n_pixels(),
+  const double count = loops::sum(grid.reductions(), grid.local_pixels(),
                                   [&](std::int64_t i) { return p[i] > 0.0 ? 1.0 : 0.0; });
   return count / static_cast<double>(grid.n_pixels());
 }
@@ -29,7 +29,7 @@ double ExponentialAdhesion::energy(const Grid &grid, const ContactState &state) 
   // The gap of a consistent state is >= 0 up to rounding; phi is defined on the wall's side.
   const double *g = state.gap.data();
   const ExponentialPotential phi = potential_;
-  const double total = loops::sum(grid.reductions(), grid.n_pixels(), [&](std::int64_t i) {
+  const double total = loops::sum(grid.reductions(), grid.local_pixels(), [&](std::int64_t i) {
     return phi.phi(g[i] > 0.0 ? g[i] : 0.0);
   });
   return grid.pixel_area() * total;
@@ -37,7 +37,7 @@ double ExponentialAdhesion::energy(const Grid &grid, const ContactState &state) 
 
 void PotentialInteraction::evaluate_on(const Grid &grid, const ContactState &state, Field &phi,
                                        Field &slope) const {
-  const std::int64_t n = grid.n_pixels();
+  const std::int64_t n = grid.local_pixels();
   phi = grid.make_field();
   slope = grid.make_field();
   // With the hard wall, phi is defined on the wall's side (g >= 0 up to rounding).
@@ -57,7 +57,7 @@ double PotentialInteraction::energy(const Grid &grid, const ContactState &state)
   evaluate_on(grid, state, phi, slope);
   const double *f = phi.data();
   return grid.pixel_area() *
-         loops::sum(grid.reductions(), grid.n_pixels(), [&](std::int64_t i) { return f[i]; });
+         loops::sum(grid.reductions(), grid.local_pixels(), [&](std::int64_t i) { return f[i]; });
 }
 
 double PotentialInteraction::contact_fraction(const Grid &grid, const ContactState &state) const {
@@ -68,7 +68,7 @@ double PotentialInteraction::contact_fraction(const Grid &grid, const ContactSta
   Field phi, slope;
   evaluate_on(grid, state, phi, slope);
   const double *d = slope.data();
-  const double count = loops::sum(grid.reductions(), grid.n_pixels(),
+  const double count = loops::sum(grid.reductions(), grid.local_pixels(),
                                   [&](std::int64_t i) { return d[i] < 0.0 ? 1.0 : 0.0; });
   return count / static_cast<double>(grid.n_pixels());
 }

@@ -26,6 +26,10 @@ PeriodicHalfSpace::PeriodicHalfSpace(const Grid &grid, double contact_modulus)
     if (q > 0.0) q_min = std::fmin(q_min, q);
     q_max = std::fmax(q_max, q);
   });
+  double extremes[2] = {-q_min, q_max};
+  grid.reductions().combine_maxima(extremes, 2);
+  q_min = -extremes[0];
+  q_max = extremes[1];
   // Default K~(0): mean of K~ at the lowest wavevector of each axis with more than one pixel;
   // a single pixel has none, and then the x box length sets the scale.
   const double two_pi = 6.283185307179586476925286766559;
@@ -39,6 +43,7 @@ PeriodicHalfSpace::PeriodicHalfSpace(const Grid &grid, double contact_modulus)
   layout_.for_each([&](std::int64_t, double q, double weight) {
     if (q > 0.0) nonzero_stiffness_sum_ += weight * stiffness_at(q);
   });
+  grid.reductions().combine_sums(&nonzero_stiffness_sum_, 1);
   pixel_stiffness_ = (nonzero_stiffness_sum_ + k0_) / n;
 
   const double k_min = q_min < HUGE_VAL ? std::fmin(stiffness_at(q_min), k0_) : k0_;
@@ -62,9 +67,11 @@ void PeriodicHalfSpace::set_k0(double k0) {
                     ": its inverse or the pixel stiffness would not be a finite, normal double");
   k0_ = k0;
   pixel_stiffness_ = pixel;
-  // The q = 0 entry is the first of the half spectrum.
-  if (!compliance_.empty()) compliance_[0] = 1.0 / (n * k0_);
-  if (!stiffness_.empty()) stiffness_[0] = k0_ / n;
+  // The q = 0 entry is the first of the half spectrum (on the process holding it).
+  if (layout_.is_mean(0)) {
+    if (!compliance_.empty()) compliance_[0] = 1.0 / (n * k0_);
+    if (!stiffness_.empty()) stiffness_[0] = k0_ / n;
+  }
 }
 
 const Field &PeriodicHalfSpace::normalised_compliance() const {
@@ -118,7 +125,7 @@ double PeriodicHalfSpace::elastic_energy_of_pressure(const double *pressure) con
   // From the pressure, u = K^-1 p, rather than from the system's g + h - max h + delta: the
   // latter cancels the heights, and its round-off, squared in the energy, can dwarf small
   // deformations of tall surfaces. The q = 0 mode is left out either way.
-  const std::int64_t n = grid_.n_pixels();
+  const std::int64_t n = grid_.local_pixels();
   if (loops::maximum(grid_.reductions(), n,
                      [&](std::int64_t i) { return std::fabs(pressure[i]); }) == 0.0)
     return 0.0;
@@ -136,15 +143,15 @@ double PeriodicHalfSpace::elastic_energy_of_pressure(const double *pressure) con
 double PeriodicHalfSpace::elastic_energy(const double *displacement) const {
   // (A/2) sum_q K~ |u^_q|^2 with u^ = FFT(u)/N. The displacement is divided by its largest
   // magnitude first, so that squares cannot overflow for any representable field.
-  const std::int64_t n_pixels = grid_.n_pixels();
-  const double largest = loops::maximum(grid_.reductions(), n_pixels,
+  const std::int64_t local = grid_.local_pixels();
+  const double largest = loops::maximum(grid_.reductions(), local,
                                         [&](std::int64_t i) { return std::fabs(displacement[i]); });
   if (!(largest > 0.0)) return 0.0;
   Field u = grid_.make_field();
-  loops::for_each(n_pixels, [&](std::int64_t i) { u[i] = displacement[i] / largest; });
+  loops::for_each(local, [&](std::int64_t i) { u[i] = displacement[i] / largest; });
   Spectrum s = make_spectrum();
   forward(u.data(), s.data());
-  const double n = static_cast<double>(n_pixels);
+  const double n = static_cast<double>(grid_.n_pixels());
   double sum = 0.0;
   layout_.for_each([&](std::int64_t k, double q, double weight) {
     if (q > 0.0) sum += weight * (stiffness_at(q) / n) * (std::norm(s[k]) / n);

@@ -193,12 +193,30 @@ std::string bad_output(std::int64_t i, const double *phi, const double *dphi,
 
 }  // namespace
 
-CallbackPotential::CallbackPotential(PotentialFunction function, void *user_data)
-    : function_(function), user_data_(user_data) {}
+CallbackPotential::CallbackPotential(PotentialFunction function, void *user_data,
+                                     const Reductions *processes)
+    : function_(function), user_data_(user_data), processes_(processes) {}
 
-CallbackPotential::CallbackPotential(PotentialFunction function, void *user_data, double length,
+CallbackPotential::CallbackPotential(PotentialFunction function, void *user_data,
+                                     const Reductions *processes, double length,
                                      double pressure)
-    : function_(function), user_data_(user_data), length_(length), pressure_(pressure) {}
+    : function_(function),
+      user_data_(user_data),
+      processes_(processes),
+      length_(length),
+      pressure_(pressure) {}
+
+std::string CallbackPotential::failure(std::int64_t n, const double *physical, const double *phi,
+                                       const double *dphi, const double *d2phi,
+                                       int status) const {
+  if (status != 0)
+    return "the potential callback returned " + std::to_string(status) + " instead of 0";
+  const std::int64_t bad = first_not_finite(n, phi, dphi, d2phi);
+  if (bad < n)
+    return "the potential callback wrote " + bad_output(bad, phi, dphi, d2phi) + " at index " +
+           std::to_string(bad) + " (gap " + format_number(physical[bad]) + ")";
+  return std::string();
+}
 
 void CallbackPotential::evaluate(std::int64_t n, const double *gap, double *phi, double *dphi,
                                  double *d2phi) const {
@@ -211,43 +229,43 @@ void CallbackPotential::evaluate(std::int64_t n, const double *gap, double *phi,
     physical = g;
   }
   const int status = function_(n, physical, phi, dphi, d2phi, user_data_);
-  if (status != 0)
-    throw Error(Status::callback,
-                "the potential callback returned " + std::to_string(status) + " instead of 0");
-  std::int64_t bad = first_not_finite(n, phi, dphi, d2phi);
-  if (bad < n)
-    throw Error(Status::callback, "the potential callback wrote " +
-                                      bad_output(bad, phi, dphi, d2phi) + " at index " +
-                                      std::to_string(bad) + " (gap " +
-                                      format_number(physical[bad]) + ")");
-  if (length_ == 1.0 && pressure_ == 1.0) return;
-  const double energy = 1.0 / (pressure_ * length_), stress = 1.0 / pressure_,
-               stiffness = length_ / pressure_;
-  if (d2phi != nullptr) {
-    loops::for_each(n, [&](std::int64_t i) {
-      phi[i] *= energy;
-      dphi[i] *= stress;
-      d2phi[i] *= stiffness;
-    });
-  } else {
-    loops::for_each(n, [&](std::int64_t i) {
-      phi[i] *= energy;
-      dphi[i] *= stress;
-    });
+  std::string failed = failure(n, physical, phi, dphi, d2phi, status);
+  if (failed.empty() && (length_ != 1.0 || pressure_ != 1.0)) {
+    const double energy = 1.0 / (pressure_ * length_), stress = 1.0 / pressure_,
+                 stiffness = length_ / pressure_;
+    if (d2phi != nullptr) {
+      loops::for_each(n, [&](std::int64_t i) {
+        phi[i] *= energy;
+        dphi[i] *= stress;
+        d2phi[i] *= stiffness;
+      });
+    } else {
+      loops::for_each(n, [&](std::int64_t i) {
+        phi[i] *= energy;
+        dphi[i] *= stress;
+      });
+    }
+    // Finite values of the callback can still overflow in small units.
+    const std::int64_t bad = first_not_finite(n, phi, dphi, d2phi);
+    if (bad < n)
+      failed = "the potential callback's values at index " + std::to_string(bad) + " (gap " +
+               format_number(physical[bad]) + ") overflow in the units of the solve (" +
+               bad_output(bad, phi, dphi, d2phi) +
+               "); rescale the potential or set a reference pressure";
   }
-  // Finite values of the callback can still overflow in small units.
-  bad = first_not_finite(n, phi, dphi, d2phi);
-  if (bad < n)
-    throw Error(Status::callback,
-                "the potential callback's values at index " + std::to_string(bad) + " (gap " +
-                    format_number(physical[bad]) + ") overflow in the units of the solve (" +
-                    bad_output(bad, phi, dphi, d2phi) +
-                    "); rescale the potential or set a reference pressure");
+  if (processes_ != nullptr) {
+    double any = failed.empty() ? 0.0 : 1.0;
+    processes_->combine_maxima(&any, 1);
+    if (any > 0.0 && failed.empty())
+      throw Error(Status::callback, "the potential callback failed on another process");
+  }
+  if (!failed.empty()) throw Error(Status::callback, failed);
 }
 
 std::unique_ptr<Potential> CallbackPotential::in_units(double length, double pressure) const {
   return std::unique_ptr<Potential>(
-      new CallbackPotential(function_, user_data_, length_ * length, pressure_ * pressure));
+      new CallbackPotential(function_, user_data_, processes_, length_ * length,
+                            pressure_ * pressure));
 }
 
 }  // namespace asp

@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "core/reductions.hpp"
+
 namespace asp {
 
 class Potential {
@@ -130,8 +132,11 @@ using PotentialFunction = int (*)(std::int64_t n, const double *gap, double *phi
 // before, phi, phi' and phi'' to the copy's units after.
 class CallbackPotential final : public Potential {
  public:
-  // function not null (System checks it).
-  CallbackPotential(PotentialFunction function, void *user_data);
+  // function not null (System checks it). On a distributed grid, `processes` are its
+  // reductions: a callback that fails on one process then fails the evaluation on all
+  // (the others report that another process's callback failed), so that none waits forever.
+  CallbackPotential(PotentialFunction function, void *user_data,
+                    const Reductions *processes = nullptr);
 
   void evaluate(std::int64_t n, const double *gap, double *phi, double *dphi,
                 double *d2phi) const override;
@@ -142,10 +147,15 @@ class CallbackPotential final : public Potential {
   std::string description() const override { return "user potential (a callback)"; }
 
  private:
-  CallbackPotential(PotentialFunction function, void *user_data, double length, double pressure);
+  CallbackPotential(PotentialFunction function, void *user_data, const Reductions *processes,
+                    double length, double pressure);
+  // The failure of this process's evaluation, if any (the message), else "".
+  std::string failure(std::int64_t n, const double *physical, const double *phi,
+                      const double *dphi, const double *d2phi, int status) const;
 
   PotentialFunction function_;
   void *user_data_;
+  const Reductions *processes_;
   // A gap of this potential is `length_` physical lengths; a pressure `pressure_` physical
   // pressures (1 and 1 for the physical potential itself).
   double length_ = 1.0;

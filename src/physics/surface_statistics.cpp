@@ -32,7 +32,7 @@ struct ScaledSpectrum {
 };
 
 ScaledSpectrum scaled_spectrum(const Grid &grid, const double *heights) {
-  const std::int64_t n = grid.n_pixels();
+  const std::int64_t n = grid.local_pixels();
   ScaledSpectrum out;
   out.exponent = exponent_above(
       loops::maximum(grid.reductions(), n, [&](std::int64_t i) { return std::fabs(heights[i]); }));
@@ -51,8 +51,9 @@ ScaledSpectrum scaled_spectrum(const Grid &grid, const double *heights) {
 template <class Visit>
 void for_each_mode(const Grid &grid, const ScaledSpectrum &h, Visit visit) {
   const double n = static_cast<double>(grid.n_pixels());
-  grid.half_spectrum().for_each([&](std::int64_t k, double q, double weight) {
-    if (k == 0) return;  // the mean, stored first
+  const SpectralLayout layout = grid.half_spectrum();
+  layout.for_each([&](std::int64_t k, double q, double weight) {
+    if (layout.is_mean(k)) return;  // the mean, stored first
     visit(q, std::norm(h.spectrum[static_cast<std::size_t>(k)]) / (n * n), weight);
   });
 }
@@ -62,6 +63,7 @@ double largest_wavevector(const Grid &grid) {
   double q_max = 0.0;
   grid.half_spectrum().for_each(
       [&](std::int64_t, double q, double) { q_max = std::fmax(q_max, q); });
+  grid.reductions().combine_maxima(&q_max, 1);
   return q_max;
 }
 
@@ -126,6 +128,10 @@ SurfaceStatistics surface_statistics(const Grid &grid, const double *heights) {
 double rms_slope_within_box(const Grid &grid, const double *heights) {
   // Differences divided by 2^e (e above the largest height) are at most 2 in magnitude, so
   // their squares cannot overflow; the scale comes back exactly in ldexp.
+  if (grid.partition() != nullptr)
+    throw Error(Status::unsupported,
+                "argument 'grid' is distributed over processes: the rms slope within the box "
+                "(of a free substrate's heights) needs neighbouring rows on one process");
   const std::int64_t nx = grid.nx(), ny = grid.ny(), n = grid.n_pixels();
   const int exponent = exponent_above(
       loops::maximum(grid.reductions(), n, [&](std::int64_t i) { return std::fabs(heights[i]); }));

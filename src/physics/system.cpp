@@ -33,7 +33,7 @@ System::System(std::shared_ptr<const Grid> grid, double contact_modulus, Substra
 }
 
 void System::set_topography(const double *heights) {
-  const std::int64_t n = grid_->n_pixels();
+  const std::int64_t n = grid_->local_pixels();
   const Reductions &reduce = grid_->reductions();
   const double top = loops::maximum(reduce, n, [&](std::int64_t i) { return heights[i]; });
   const double bottom = -loops::maximum(reduce, n, [&](std::int64_t i) { return -heights[i]; });
@@ -70,7 +70,7 @@ void System::reset_state() {
   double *p = state_.pressure.data();
   double *g = state_.gap.data();
   const double *h = heights_.data();
-  loops::for_each(grid_->n_pixels(), [&](std::int64_t i) {
+  loops::for_each(grid_->local_pixels(), [&](std::int64_t i) {
     p[i] = 0.0;
     g[i] = max_height_ - h[i];
   });
@@ -81,14 +81,14 @@ double System::mean_pressure() const {
   const double *p = state_.pressure.data();
   // Each term divided by N first: the sum of finite pressures cannot overflow.
   const double n = static_cast<double>(grid_->n_pixels());
-  return loops::sum(grid_->reductions(), grid_->n_pixels(),
+  return loops::sum(grid_->reductions(), grid_->local_pixels(),
                     [&](std::int64_t i) { return p[i] / n; });
 }
 
 double System::mean_gap() const {
   const double *g = state_.gap.data();
   const double n = static_cast<double>(grid_->n_pixels());
-  return loops::sum(grid_->reductions(), grid_->n_pixels(),
+  return loops::sum(grid_->reductions(), grid_->local_pixels(),
                     [&](std::int64_t i) { return g[i] / n; });
 }
 
@@ -96,7 +96,7 @@ double System::total_force() const { return mean_pressure() * grid_->area(); }
 
 double System::attractive_fraction() const {
   const double *p = state_.pressure.data();
-  const double count = loops::sum(grid_->reductions(), grid_->n_pixels(),
+  const double count = loops::sum(grid_->reductions(), grid_->local_pixels(),
                                   [&](std::int64_t i) { return p[i] < 0.0 ? 1.0 : 0.0; });
   return count / static_cast<double>(grid_->n_pixels());
 }
@@ -105,7 +105,7 @@ double System::repulsive_force() const {
   // As the mean pressure: each term divided by N first, then times the box area.
   const double *p = state_.pressure.data();
   const double n = static_cast<double>(grid_->n_pixels());
-  return grid_->area() * loops::sum(grid_->reductions(), grid_->n_pixels(), [&](std::int64_t i) {
+  return grid_->area() * loops::sum(grid_->reductions(), grid_->local_pixels(), [&](std::int64_t i) {
            return (p[i] > 0.0 ? p[i] : 0.0) / n;
          });
 }
@@ -113,7 +113,7 @@ double System::repulsive_force() const {
 double System::attractive_force() const {
   const double *p = state_.pressure.data();
   const double n = static_cast<double>(grid_->n_pixels());
-  return grid_->area() * loops::sum(grid_->reductions(), grid_->n_pixels(), [&](std::int64_t i) {
+  return grid_->area() * loops::sum(grid_->reductions(), grid_->local_pixels(), [&](std::int64_t i) {
            return (p[i] < 0.0 ? p[i] : 0.0) / n;
          });
 }
@@ -123,7 +123,7 @@ void System::displacement(double *out) const {
   const double shift = state_.penetration - max_height_;
   const double *g = state_.gap.data();
   const double *h = heights_.data();
-  loops::for_each(grid_->n_pixels(), [&](std::int64_t i) { out[i] = g[i] + h[i] + shift; });
+  loops::for_each(grid_->local_pixels(), [&](std::int64_t i) { out[i] = g[i] + h[i] + shift; });
 }
 
 void System::set_adhesion(double work, double range) {
@@ -193,7 +193,8 @@ void System::set_user_potential(PotentialFunction function, void *user_data, boo
   if (function == nullptr) throw Error(Status::null_pointer, "argument 'fn' is NULL");
   set_potential(hard_wall ? InteractionKind::user_potential_hard_wall
                           : InteractionKind::user_potential,
-                std::make_unique<CallbackPotential>(function, user_data));
+                std::make_unique<CallbackPotential>(
+                    function, user_data, grid_->partition() != nullptr ? &grid_->reductions() : nullptr));
 }
 
 void System::set_potential(InteractionKind kind, std::unique_ptr<Potential> potential) {

@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "physics/topography.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/checks.hpp"
 #include "core/error.hpp"
 #include "core/loops.hpp"
 #include "core/random.hpp"
-#include "physics/surface_statistics.hpp"
+#include "core/fft_engine.hpp"
 
 namespace asp {
 namespace {
@@ -23,20 +24,30 @@ double y_of(const Grid &g, std::int64_t j) {
                             : 0.0;
 }
 
-// heights[i + nx j] = shape(dx, dy), the offsets of pixel (i, j) from the centre of the box
-// (from the axis in 1D).
+// heights[i + nx (j - row_offset)] = height(i, j) for the pixels (i, j) of this process's
+// rows (all of them unless the grid is distributed).
+template <class Height>
+void fill_rows(const Grid &g, double *heights, Height height) {
+  for (std::int64_t local = 0; local < g.local_rows(); ++local) {
+    const std::int64_t j = g.row_offset() + local;
+    for (std::int64_t i = 0; i < g.nx(); ++i) heights[i + g.nx() * local] = height(i, j);
+  }
+}
+
+// heights of pixel (i, j) = shape(dx, dy), its offsets from the centre of the box (from the
+// axis in 1D).
 template <class Shape>
 void fill_radial(const Grid &g, double *heights, Shape shape) {
   const double cx = 0.5 * g.lx();
   const double cy = g.dimension() == 2 ? 0.5 * g.ly() : 0.0;
-  for (std::int64_t j = 0; j < g.ny(); ++j)
-    for (std::int64_t i = 0; i < g.nx(); ++i)
-      heights[i + g.nx() * j] = shape(x_of(g, i) - cx, y_of(g, j) - cy);
+  fill_rows(g, heights, [&](std::int64_t i, std::int64_t j) {
+    return shape(x_of(g, i) - cx, y_of(g, j) - cy);
+  });
 }
 }  // namespace
 
 void flat_topography(const Grid &grid, double *heights) {
-  for (std::int64_t k = 0; k < grid.n_pixels(); ++k) heights[k] = 0.0;
+  for (std::int64_t k = 0; k < grid.local_pixels(); ++k) heights[k] = 0.0;
 }
 
 void sphere_topography(const Grid &grid, double radius, double *heights) {
@@ -80,11 +91,9 @@ void sinusoid_topography(const Grid &grid, double amplitude, std::int64_t period
   // 1e150, so kx < 1e150 periods_x, and x_of stays below lx.
   const double kx = two_pi * static_cast<double>(periods_x) / grid.lx();
   const double ky = two_pi * static_cast<double>(periods_y) / grid.ly();
-  for (std::int64_t j = 0; j < grid.ny(); ++j) {
-    const double cy = std::cos(ky * y_of(grid, j));
-    for (std::int64_t i = 0; i < grid.nx(); ++i)
-      heights[i + grid.nx() * j] = amplitude * std::cos(kx * x_of(grid, i)) * cy;
-  }
+  fill_rows(grid, heights, [&](std::int64_t i, std::int64_t j) {
+    return amplitude * std::cos(kx * x_of(grid, i)) * std::cos(ky * y_of(grid, j));
+  });
 }
 
 void double_sinewave_topography(const Grid &grid, double amplitude, double ripple_amplitude,
@@ -102,11 +111,10 @@ void double_sinewave_topography(const Grid &grid, double amplitude, double rippl
                     "double");
   const double k = two_pi / grid.lx();
   const double kr = k * static_cast<double>(ripple_periods);
-  for (std::int64_t i = 0; i < grid.nx(); ++i) {
+  fill_rows(grid, heights, [&](std::int64_t i, std::int64_t) {
     const double x = x_of(grid, i);
-    const double h = amplitude * std::cos(k * x) + ripple_amplitude * std::cos(kr * x);
-    for (std::int64_t j = 0; j < grid.ny(); ++j) heights[i + grid.nx() * j] = h;
-  }
+    return amplitude * std::cos(k * x) + ripple_amplitude * std::cos(kr * x);
+  });
 }
 
 void self_affine_topography(const Grid &grid, const SelfAffineParameters &p, double *heights) {
@@ -127,15 +135,17 @@ void self_affine_topography(const Grid &grid, const SelfAffineParameters &p, dou
                                               format_number(p.rolloff) + ")");
   require_positive(p.target, "target");
 
-  // White noise in a fixed order, then filtered by sqrt(C(q)) in Fourier space: the spectrum
-  // is Hermitian by construction, for odd and even sizes alike. The surface is made in the
-  // library's own aligned field, where FFTW plans may run, and copied out at the end: the
-  // caller's array may start anywhere (a NumPy slice, a Fortran section).
-  const std::int64_t n = grid.n_pixels();
-  Random random(p.seed);
-  Field surface = grid.make_field();
-  for (std::int64_t k = 0; k < n; ++k) surface[static_cast<std::size_t>(k)] = random.gaussian();
-
+  // Gaussian white noise in Fourier space, one complex number per wavevector from a stream
+  // keyed by the seed and the wavevector (Random::keyed), filtered by sqrt(C(q)), then
+  // transformed back along y for each column kx and along x for each row, with the same
+  // one-dimensional transforms (LineFft) on every process. Each process makes every column
+  // (it needs all ky of a column for its rows) and keeps its rows: a seed gives the same
+  // surface, to the bit, on any number of processes, and the statistics that set the scale
+  // are summed over all modes in one order on each. The spectrum is Hermitian by
+  // construction: the columns kx = 0 and, for even nx, kx = nx/2 hold conjugate pairs
+  // (ky, ny - ky) drawn once, real where ky is its own partner.
+  const std::int64_t nx = grid.nx(), ny = grid.ny(), columns = nx / 2 + 1;
+  const std::int64_t rows = grid.local_rows(), first_row = grid.row_offset();
   const double q_l = two_pi / p.long_cutoff, q_r = two_pi / p.rolloff;
   const double q_s = two_pi / p.short_cutoff;
   // C(q) ~ q^(-2-2H) on a surface, q^(-1-2H) on a profile (the field's convention, so that a
@@ -143,31 +153,75 @@ void self_affine_topography(const Grid &grid, const SelfAffineParameters &p, dou
   const double spectral_exponent = grid.dimension() == 2 ? -2.0 - 2.0 * p.hurst
                                                          : -1.0 - 2.0 * p.hurst;
   const double exponent = 0.5 * spectral_exponent;
-  Spectrum s = grid.make_spectrum();
-  grid.fft().forward(surface.data(), s.data());
+  const auto frequency = [](std::int64_t k, std::int64_t n) { return k <= n / 2 ? k : n - k; };
+  const double per_x = two_pi / grid.lx(), per_y = two_pi / grid.ly();
+  // Sums of |S|^2, (q/q_s)^2 |S|^2 over the full spectrum: the mean square height and slope
+  // of the surface (Parseval, with the unnormalised backward transform).
+  double square_sum = 0.0, slope_sum = 0.0;
   bool any_mode = false;
-  grid.half_spectrum().for_each([&](std::int64_t k, double q, double) {
-    double amplitude = 0.0;
-    // Small relative slack so that a cutoff placed exactly on a grid wavevector keeps it.
-    if (q > 0.0 && q >= q_l * (1 - 1e-12) && q <= q_s * (1 + 1e-12)) {
-      amplitude = q < q_r ? 1.0 : std::pow(q / q_r, exponent);
-      any_mode = true;
+
+  Spectrum line(static_cast<std::size_t>(ny));
+  Spectrum kept(static_cast<std::size_t>(columns * rows));
+  const LineFft along_y(ny);
+  for (std::int64_t kx = 0; kx < columns; ++kx) {
+    const bool self_paired = kx == 0 || (nx % 2 == 0 && 2 * kx == nx);
+    const double qx = per_x * static_cast<double>(kx);
+    double column_square = 0.0, column_slope = 0.0;
+    for (std::int64_t ky = 0; ky < ny; ++ky) {
+      const std::int64_t partner = (ny - ky) % ny;
+      const std::int64_t drawn = self_paired ? std::min(ky, partner) : ky;
+      Random noise = Random::keyed(p.seed, static_cast<std::uint64_t>(kx + columns * drawn));
+      const double a = noise.gaussian(), b = noise.gaussian();
+      Complex z = self_paired && drawn == ky && ky == partner
+                      ? Complex(a, 0.0)
+                      : Complex(a, b) * 0.70710678118654752440;
+      if (self_paired && drawn != ky) z = std::conj(z);
+      const double qy = per_y * static_cast<double>(frequency(ky, ny));
+      const double q = std::sqrt(qx * qx + qy * qy);
+      double amplitude = 0.0;
+      // Small relative slack so that a cutoff placed exactly on a grid wavevector keeps it.
+      if (q > 0.0 && q >= q_l * (1 - 1e-12) && q <= q_s * (1 + 1e-12)) {
+        amplitude = q < q_r ? 1.0 : std::pow(q / q_r, exponent);
+        any_mode = true;
+      }
+      z *= amplitude;
+      line[static_cast<std::size_t>(ky)] = z;
+      const double qs = q / q_s;
+      column_square += std::norm(z);
+      column_slope += qs * qs * std::norm(z);
     }
-    s[static_cast<std::size_t>(k)] *= amplitude;
-  });
+    const double modes = self_paired ? 1.0 : 2.0;
+    square_sum += modes * column_square;
+    slope_sum += modes * column_slope;
+    along_y.backward(line.data());
+    for (std::int64_t local = 0; local < rows; ++local)
+      kept[static_cast<std::size_t>(kx + columns * local)] =
+          line[static_cast<std::size_t>(first_row + local)];
+  }
   if (!any_mode)
     throw Error(Status::invalid_argument,
                 "arguments 'long_cutoff' and 'short_cutoff': no wavevector of the grid lies "
                 "between 2 pi/long_cutoff and 2 pi/short_cutoff");
-  grid.fft().backward(s.data(), surface.data());
+  Field surface = grid.make_field();
+  {
+    const RealLineFft along_x(nx);
+    Spectrum half(static_cast<std::size_t>(columns));
+    Field row(static_cast<std::size_t>(nx));
+    for (std::int64_t local = 0; local < rows; ++local) {
+      std::copy(kept.begin() + columns * local, kept.begin() + columns * (local + 1), half.begin());
+      along_x.backward(half.data(), row.data());
+      std::copy(row.begin(), row.end(), surface.begin() + nx * local);
+    }
+  }
+  const std::int64_t n = grid.local_pixels();
+  const double rms_height = std::sqrt(square_sum), rms_slope = std::sqrt(slope_sum) * q_s;
 
   // Scaled to the target. A Gaussian surface's peaks reach several times its rms height,
   // so a target near the largest double can need heights beyond it: refused, naming the
   // target, before the caller's array is touched. Rounding is monotone, so if the largest
   // height scales to a finite value every height does.
-  const SurfaceStatistics stats = surface_statistics(grid, surface.data());
   const bool by_height = p.norm == RoughnessNorm::rms_height;
-  const double measured = by_height ? stats.rms_height : stats.rms_slope;
+  const double measured = by_height ? rms_height : rms_slope;
   const double scale = p.target / measured;
   const double largest =
       loops::maximum(grid.reductions(), n, [&](std::int64_t k) { return std::fabs(surface[k]); });

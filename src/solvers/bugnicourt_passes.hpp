@@ -69,6 +69,7 @@ class BugnicourtPasses {
   explicit BugnicourtPasses(Formulation &f)
       : f_(f),
         n_(f.size()),
+        total_(f.total_size()),
         bounded_(f.bounded_size()),
         lower_(f.lower_bound()),
         mean_(f.constrains_mean()),
@@ -129,7 +130,7 @@ class BugnicourtPasses {
         loops::for_each(n_, [&](std::int64_t i) { x[i] = uniform; });
         return out;
       }
-      scale = f_.mean_target() * static_cast<double>(n_) / moved[0];
+      scale = f_.mean_target() * total_ / moved[0];
       if (moved[1] > 0.0) follow = false;
     }
     if (!follow) {
@@ -181,7 +182,7 @@ class BugnicourtPasses {
     if (mean_) {
       const auto moved = moved_sum(x, d, alpha);
       uniform = !(moved[0] > 0.0);
-      scale = uniform ? 0.0 : f_.mean_target() * static_cast<double>(n_) / moved[0];
+      scale = uniform ? 0.0 : f_.mean_target() * total_ / moved[0];
       out.cut = uniform || moved[1] > 0.0;
     }
     const double level = uniform ? f_.mean_target() : 0.0;
@@ -284,6 +285,7 @@ class BugnicourtPasses {
 
   Formulation &f_;
   std::int64_t n_;
+  double total_;  // unknowns over all processes
   std::int64_t bounded_;
   double lower_;
   bool mean_;

@@ -39,7 +39,7 @@ void DisplacementFormulation::apply_stiffness(const double *x, double *out) {
   const double factor = 1.0 / substrate_.pixel_stiffness();
   loops::for_each(static_cast<std::int64_t>(spectrum_.size()),
                   [&](std::int64_t q) { s[q] *= factor * k[q]; });
-  if (load_control()) s[0] = 0.0;
+  if (load_control() && substrate_.layout().is_mean(0)) s[0] = 0.0;
   substrate_.surface_backward(spectrum_.data(), out);
   counters_.transforms += 2;
 }

@@ -54,7 +54,8 @@ void DualFormulation::gap_of(const double *pressure, double pressure_scale, doub
   const double factor = pressure_scale * compliance_factor_;
   loops::for_each(static_cast<std::int64_t>(spectrum_.size()),
                   [&](std::int64_t k) { s[k] = factor * c[k] * s[k] - hs[k]; });
-  s[0] -= delta_;  // a constant in every pixel after the unnormalised backward transform
+  // A constant in every pixel after the unnormalised backward transform.
+  if (substrate_.layout().is_mean(0)) s[0] -= delta_;
   substrate_.backward(spectrum_.data(), gap);
   counters_.transforms += 2;
   counters_.evaluations += 1;
@@ -119,7 +120,7 @@ double DualFormulation::gap_of_iterate(double *gap, bool with_energy) {
   } else {
     loops::for_each(m, [&](std::int64_t k) { gap_entry(k, ps[k]); });
   }
-  s[0] -= delta_;
+  if (substrate_.layout().is_mean(0)) s[0] -= delta_;
   substrate_.backward(spectrum_.data(), gap);
   counters_.transforms += 1;
   counters_.evaluations += 1;
@@ -183,7 +184,7 @@ double DualFormulation::error(const double *x, const double *gradient) const {
 }
 
 double DualFormulation::contact_fraction(const double *x) const {
-  const double n = static_cast<double>(n_);
+  const double n = pixels_;
   const double contacts =
       loops::sum(grid_.reductions(), n_, [&](std::int64_t i) { return x[i] > 0.0 ? 1.0 : 0.0; });
   return contacts / n;
@@ -209,7 +210,7 @@ double DualFormulation::reported_objective(const double *x, const double *gradie
 void DualFormulation::load_state() {
   double *p = state_.pressure.data();
   const double inverse_unit = 1.0 / pressure_unit_;
-  const double n = static_cast<double>(n_);
+  const double n = pixels_;
   // Negative pressures cannot stand against a hard wall; NaN is kept so that the monitor sees
   // it (std::fmax would drop it).
   const double sum = loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
@@ -352,7 +353,7 @@ bool DualFormulation::step(double tau) {
   scale_ = 1.0;
   bool entered = s[1] > 0.0;
   if (control_ == Control::mean_pressure) {
-    const double n = static_cast<double>(n_);
+    const double n = pixels_;
     if (s[0] > 0.0) {
       scale_ = target_ * n / s[0];
     } else {
@@ -377,7 +378,7 @@ void DualFormulation::admit_interpenetrating_pixels() {
   });
   scale_ = 1.0;
   if (control_ == Control::mean_pressure && sum > 0.0)
-    scale_ = target_ * static_cast<double>(n_) / sum;
+    scale_ = target_ * pixels_ / sum;
   direction_sum_on_contact_ = 0.0;
   linear_update_ready_ = false;
   gap_is_current_ = false;

@@ -32,6 +32,12 @@ class Formulation {
 
   // Number of unknowns and the current iterate, which a solver reads and writes in place.
   virtual std::int64_t size() const = 0;
+  // The number of unknowns over all processes (size() on one), for means.
+  double total_size() const {
+    double total = static_cast<double>(size());
+    reductions().combine_sums(&total, 1);
+    return total;
+  }
   virtual Field &variable() = 0;
 
   // The objective at x and its gradient (in the inner product below).

@@ -41,7 +41,8 @@ FourierFormulation::FourierFormulation(System &system, Control control, double v
     b[k] = a[k] * weight / points;
     largest_compliance_ = std::max(largest_compliance_, 1.0 / s);
   });
-  if (load_control()) elastic_[0] = 0.0;
+  grid_.reductions().combine_maxima(&largest_compliance_, 1);
+  if (load_control() && layout.is_mean(0)) elastic_[0] = 0.0;
 
   // The start: the state's displacement, transformed and scaled.
   double *u = displacement_.data();

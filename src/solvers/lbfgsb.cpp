@@ -36,17 +36,19 @@ inline bool at_bound(double x, double g, double lower, double t) {
   return g > 0.0 && x - lower <= t * g;
 }
 
-// Over the unknowns of a set (in(i)) whose size is about `size`: the sums of g_i w_i into a
+// Over the unknowns of a set (in(i)) whose size over all processes is about `size` (of
+// `total` unknowns; n here): the sums of g_i w_i into a
 // (2k entries) and, if gram is not null, of w_i w_i^T into gram (2k x 2k), with w_i row i of
 // W. They are summed over the set or over its complement, whichever is smaller, the latter
 // subtracted from the totals W^T g and W^T W that the compact matrix keeps: so that only
 // the few unknowns in (or out of) contact are visited.
 template <class In>
-void sums_over_set(In in, std::int64_t size, std::int64_t n, const double *g,
-                   const CompactBfgs &bfgs, const Reductions &reductions, Indices &list,
-                   double *a, double *gram) {
+void sums_over_set(In in, std::int64_t size, std::int64_t total, std::int64_t n,
+                   const double *g, const CompactBfgs &bfgs, const Reductions &reductions,
+                   Indices &list, double *a, double *gram) {
   const int k2 = bfgs.columns();
-  const bool complement = size > n / 2;
+  // The same choice on every process, from global counts.
+  const bool complement = size > total / 2;
   list.clear();
   loops::select(n, [&](std::int64_t i) { return in(i) != complement; }, list);
   const std::int64_t listed = static_cast<std::int64_t>(list.size());
@@ -103,14 +105,17 @@ CauchyPoint generalized_cauchy_point(const double *x, const double *g, std::int6
     sum[1] += held ? 0.0 : g[i] * g[i];
   });
   const auto held = static_cast<std::int64_t>(start[0]);
+  double unknowns = static_cast<double>(n);
+  reductions.combine_sums(&unknowns, 1);
+  const auto total = static_cast<std::int64_t>(unknowns);
   double slope = -start[1];
   cauchy.at_bound = held;
   if (!(slope < 0.0)) return cauchy;  // the path does not move: x is its own Cauchy point
   // M p and M c are carried along with p and c, so that a segment needs one product with M.
   std::vector<double> p(size), mp(size), mc(size, 0.0), w(size), mw(size);
   if (k2 > 0) {
-    sums_over_set([&](std::int64_t i) { return !at_bound(x[i], g[i], bound(i), 0.0); }, n - held,
-                  n, g, bfgs, reductions, list, p.data(), nullptr);
+    sums_over_set([&](std::int64_t i) { return !at_bound(x[i], g[i], bound(i), 0.0); },
+                  total - held, total, n, g, bfgs, reductions, list, p.data(), nullptr);
     for (double &v : p) v = -v;
     bfgs.times_middle(p.data(), mp.data());
   }
@@ -131,22 +136,36 @@ CauchyPoint generalized_cauchy_point(const double *x, const double *g, std::int6
   for (std::int64_t i : list) heap.push_back({(x[i] - bound(i)) / g[i], i});
   std::make_heap(heap.begin(), heap.end(), later);
 
-  // Segment after segment, until the minimum of the model lies inside one.
+  // Segment after segment, until the minimum of the model lies inside one. The next
+  // breakpoint is the smallest over all processes: each offers its own smallest, with what
+  // the step needs of it (g_b, z_b and row b of W), and every process takes the winner's.
   double t = 0.0;
-  while (!heap.empty()) {
-    const Breakpoint b = heap.front();
-    const double length = b.t - t;
+  std::vector<double> offer(2 + size);
+  for (;;) {
+    double next = infinity;
+    if (!heap.empty()) {
+      const Breakpoint &b = heap.front();
+      next = b.t;
+      offer[0] = g[b.i];
+      offer[1] = bound(b.i) - x[b.i];
+      for (int j = 0; j < k2; ++j) offer[2 + j] = bfgs.entry(j, b.i);
+    }
+    const bool mine = reductions.select_smallest(next, offer.data(), static_cast<int>(offer.size()));
+    if (next == infinity) break;
+    const double length = next - t;
     if (to_minimum < length) break;
-    std::pop_heap(heap.begin(), heap.end(), later);
-    heap.pop_back();
+    if (mine) {
+      std::pop_heap(heap.begin(), heap.end(), later);
+      heap.pop_back();
+    }
     ++cauchy.at_bound;
     // Unknown b reaches the bound: z_b = lower - x_b, and it leaves the direction.
-    const double gb = g[b.i], zb = bound(b.i) - x[b.i];
+    const double gb = offer[0], zb = offer[1];
     for (std::size_t j = 0; j < size; ++j) {
       cauchy.c[j] += length * p[j];
       mc[j] += length * mp[j];
     }
-    for (int j = 0; j < k2; ++j) w[j] = bfgs.entry(j, b.i);
+    for (int j = 0; j < k2; ++j) w[j] = offer[2 + j];
     if (k2 > 0) bfgs.times_middle(w.data(), mw.data());
     slope += length * curvature + gb * gb + theta * gb * zb - gb * dot(w, mc);
     curvature += -theta * gb * gb - 2.0 * gb * dot(mw, p) - gb * gb * dot(w, mw);
@@ -157,7 +176,7 @@ CauchyPoint generalized_cauchy_point(const double *x, const double *g, std::int6
       mp[j] += gb * mw[j];
     }
     to_minimum = -slope / curvature;
-    t = b.t;
+    t = next;
   }
   to_minimum = std::max(to_minimum, 0.0);
   cauchy.t = t + to_minimum;
@@ -177,6 +196,7 @@ class Lbfgsb {
   Lbfgsb(Formulation &f, int memory)
       : f_(f),
         n_(f.size()),
+        total_(static_cast<std::int64_t>(f.total_size())),
         bounded_(f.bounded_size()),
         lower_(f.lower_bound()),
         reductions_(f.reductions()),
@@ -242,15 +262,15 @@ class Lbfgsb {
     const double theta = bfgs_.theta(), t = cauchy.t;
     const double *x = x_, *g = g_.data();
     const auto size = static_cast<std::size_t>(k2);
-    const std::int64_t free_count = n_ - cauchy.at_bound;
+    const std::int64_t free_count = total_ - cauchy.at_bound;
     const auto fixed = [&](std::int64_t i) { return at_bound(x[i], g[i], bound(i), t); };
     u_.assign(size, 0.0);
     if (k2 > 0) {
       // W^T Z r = (1 - theta t) sum_free g_i w_i - (Z^T W)^T Z^T W M c, since on the free
       // set x_cauchy - x = -t g.
       std::vector<double> a(size), gram(size * size), mc(size), rhs(size), v(size);
-      sums_over_set([&](std::int64_t i) { return !fixed(i); }, free_count, n_, g, bfgs_,
-                    reductions_, list_, a.data(), gram.data());
+      sums_over_set([&](std::int64_t i) { return !fixed(i); }, free_count, total_, n_, g,
+                    bfgs_, reductions_, list_, a.data(), gram.data());
       bfgs_.times_middle(cauchy.c.data(), mc.data());
       for (std::size_t r = 0; r < size; ++r) {
         double kmc = 0.0;
@@ -285,7 +305,7 @@ class Lbfgsb {
     const double *x = x_, *g = g_.data(), *u = u_.data();
     double *d = d_.data();
     // The list of free unknowns, when they are few, is the one the subspace sums made.
-    const bool listed = k2 > 0 && free_count <= n_ / 2;
+    const bool listed = k2 > 0 && free_count <= total_ / 2;
     // d holds x_bar before its projection; with a list, without w_i.u yet.
     const CompactBfgs &bfgs = bfgs_;
     if (k2 == 0 || listed) {
@@ -395,6 +415,7 @@ class Lbfgsb {
 
   Formulation &f_;
   std::int64_t n_;
+  std::int64_t total_;  // unknowns over all processes
   // The bound of unknown i: lower_bound() on the first bounded_, none on the others.
   double bound(std::int64_t i) const { return i < bounded_ ? lower_ : -infinity; }
 

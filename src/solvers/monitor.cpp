@@ -40,9 +40,13 @@ bool Monitor::should_stop(std::int64_t iteration, const IterationState &state) {
     history_.push_back({static_cast<double>(iteration), static_cast<double>(state.evaluations),
                         static_cast<double>(state.transforms), elapsed, state.error,
                         state.objective, state.contact_fraction});
-  const bool cancel = settings_.progress != nullptr &&
-                      settings_.progress(iteration, elapsed, state.error,
-                                         settings_.progress_data) != 0;
+  bool cancel = settings_.progress != nullptr &&
+                settings_.progress(iteration, elapsed, state.error, settings_.progress_data) != 0;
+  if (settings_.reductions != nullptr) {
+    double asked = cancel ? 1.0 : 0.0;
+    settings_.reductions->combine_maxima(&asked, 1);
+    cancel = asked > 0.0;
+  }
 
   // A state that met the tolerance is converged even if the callback also asked to stop.
   if (state.error <= settings_.tolerance) {

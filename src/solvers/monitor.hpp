@@ -11,6 +11,8 @@
 #include <limits>
 #include <vector>
 
+#include "core/reductions.hpp"
+
 namespace asp {
 
 enum class Termination { converged, iteration_limit, cancelled, stalled, breakdown };
@@ -29,6 +31,9 @@ struct MonitorSettings {
   bool record_history = false;
   ProgressFunction progress = nullptr;
   void *progress_data = nullptr;
+  // The processes of a distributed solve, which must stop together: a cancel asked on one
+  // stops all. Null on one process.
+  const Reductions *reductions = nullptr;
 };
 
 // What an iteration reached, as the solver knows it.

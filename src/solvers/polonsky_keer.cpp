@@ -18,6 +18,7 @@ namespace {
 // already uniform on I_c, as after a warm start from a one-pixel contact), those pixels are
 // admitted with the pressure that closes their own gap, and descent starts again.
 void polonsky_keer(DualFormulation &f, Monitor &monitor) {
+  const double total = f.total_size();
   double gap_norm_old = 1.0;
   bool conjugate = false;
   for (std::int64_t iteration = 0;; ++iteration) {
@@ -28,7 +29,7 @@ void polonsky_keer(DualFormulation &f, Monitor &monitor) {
     IterationState state;
     state.error = error;
     state.objective = gap.objective * f.energy_unit();
-    state.contact_fraction = gap.contacts / static_cast<double>(f.size());
+    state.contact_fraction = gap.contacts / total;
     state.evaluations = f.counters().evaluations;
     state.transforms = f.counters().transforms;
     if (monitor.should_stop(iteration, state)) return;

@@ -62,7 +62,7 @@ PrimalFormulation::PrimalFormulation(System &system, Control control, double val
     return g[i];
   });
   if (control == Control::mean_gap) {
-    const double n = static_cast<double>(n_);
+    const double n = pixels_;
     if (total > 0.0) {
       const double factor = target_ * n / total;
       loops::for_each(n_, [&](std::int64_t i) { g[i] *= factor; });
@@ -77,7 +77,7 @@ double PrimalFormulation::apply_stiffness(const double *field, double *out) {
   // the first: without K~(0) under mean-gap control.
   substrate_.surface_forward(field, spectrum_.data());
   Complex *s = spectrum_.data();
-  if (control_ == Control::mean_gap) s[0] = 0.0;
+  if (control_ == Control::mean_gap && substrate_.layout().is_mean(0)) s[0] = 0.0;
   const double *k = stiffness_.data();
   const double factor = 1.0 / substrate_.pixel_stiffness();
   // u.K u = sum over all modes of the stiffness times |U_q|^2 (Parseval; the 1/N is in the
@@ -219,7 +219,7 @@ double PrimalFormulation::error(const double *x, const double *gradient) const {
 }
 
 double PrimalFormulation::contact_fraction(const double *x) const {
-  const double n = static_cast<double>(n_);
+  const double n = pixels_;
   return loops::sum(grid_.reductions(), n_,
                     [&](std::int64_t i) { return x[i] > 0.0 ? 0.0 : 1.0; }) /
          n;
@@ -288,7 +288,7 @@ bool PrimalFormulation::finish() {
   // (0 without adhesion), since the wall can push but not pull, and what lies below is the
   // residual of the iterate. Then the gap that this pressure makes, so that the state is
   // consistent and its contact set is that of the iterate.
-  const double pressure = pressure_unit_, n = static_cast<double>(n_);
+  const double pressure = pressure_unit_, n = pixels_;
   const double mean_pressure =
       interacting ? loops::sum(grid_.reductions(), n_,
                                [&](std::int64_t i) {

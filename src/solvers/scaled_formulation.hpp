@@ -34,8 +34,9 @@ class ScaledFormulation : public Formulation {
         heights_(system.heights().data()),
         max_height_(system.max_height()),
         control_(control),
-        n_(system.grid().n_pixels()),
-        unknowns_(n_) {
+        n_(system.grid().local_pixels()),
+        unknowns_(n_),
+        pixels_(static_cast<double>(system.grid().n_pixels())) {
     const SceneUnits units = scene_units(system, control, value);
     pressure_unit_ = units.pressure;
     length_unit_ = units.length;
@@ -52,8 +53,9 @@ class ScaledFormulation : public Formulation {
   const double *heights_;
   double max_height_;
   Control control_;
-  std::int64_t n_;         // pixels of the grid
+  std::int64_t n_;         // pixels of the grid (of this process's rows)
   std::int64_t unknowns_;  // n_, or more where the unknowns reach beyond the grid
+  double pixels_;          // pixels of the whole grid, for means
 
   double pressure_unit_;  // P
   double length_unit_;    // P/k

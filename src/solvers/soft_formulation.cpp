@@ -75,7 +75,7 @@ double SoftFormulation::contact_fraction(const double *) const {
   const double load = load_;
   return loops::sum(grid_.reductions(), n_,
                     [&](std::int64_t i) { return dphi[i] - load < 0.0 ? 1.0 : 0.0; }) /
-         static_cast<double>(n_);
+         pixels_;
 }
 
 bool SoftFormulation::store_state(const double *u) {
@@ -91,7 +91,7 @@ bool SoftFormulation::store_state(const double *u) {
   const double factor = 1.0 / substrate_.pixel_stiffness();
   loops::for_each(static_cast<std::int64_t>(spectrum.size()),
                   [&](std::int64_t q) { s[q] *= factor * k[q]; });
-  if (load_control()) s[0] = 0.0;
+  if (load_control() && substrate_.layout().is_mean(0)) s[0] = 0.0;
   substrate_.surface_backward(spectrum.data(), elastic.data());
 
   // The state: that pressure in physical units, then the gap it makes, so that gap =
@@ -99,7 +99,7 @@ bool SoftFormulation::store_state(const double *u) {
   // the residual, is left out).
   double *p = state_.pressure.data();
   const double *e = elastic.data();
-  const double pressure = pressure_unit_, load = load_, n = static_cast<double>(n_);
+  const double pressure = pressure_unit_, load = load_, n = pixels_;
   const double mean_pressure = loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
     p[i] = (e[i] + load) * pressure;
     return p[i] / n;

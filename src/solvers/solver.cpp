@@ -111,6 +111,7 @@ void Solver::solve(System &system, Control control, double value) {
   settings.record_history = record_history_;
   settings.progress = progress_;
   settings.progress_data = progress_data_;
+  settings.reductions = &system.grid().reductions();
   Monitor monitor(settings);
   // The solve's loops run on the grid's threads (its FFTs were planned with them).
   const ThreadScope threads(system.grid().threads());

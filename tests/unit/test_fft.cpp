@@ -73,7 +73,7 @@ TEST(Fft, ParsevalWeightsCountEveryModeOnce) {
 TEST(Fft, WavevectorsWrapToTheNearestAlias) {
   // 8 x 7 on 2 x 3: the r2c rows hold kx = 0..4; rows ky = 4..6 stand for ky - 7 = -3..-1.
   auto grid = asp_test::grid_2d(8, 7, 2.0, 3.0);
-  std::vector<double> q(static_cast<std::size_t>(grid->n_spectral()));
+  std::vector<double> q(static_cast<std::size_t>(grid->local_spectral()));
   grid->half_spectrum().for_each(
       [&](std::int64_t k, double magnitude, double) { q[static_cast<std::size_t>(k)] = magnitude; });
   const std::int64_t row = 8 / 2 + 1;

@@ -123,7 +123,7 @@ TEST(Loops, SumsMaximaAndForEachCoverEveryEntry) {
 TEST(PlanCache, OnePlanPerShapeAndKindIncludingThePaddedShape) {
   auto grid = asp_test::grid_2d(12, 10, 1.0, 1.0);
   EXPECT_FALSE(grid->has_fft_plans());
-  const asp::RealFft &own = grid->fft();
+  const asp::RealTransform &own = grid->fft();
   EXPECT_EQ(&own, &grid->real_fft(12, 10));
   const asp::RealFft &padded = grid->real_fft(24, 20);
   EXPECT_NE(&own, &padded);

@@ -61,6 +61,7 @@ FUNCTIONS = {
     "asp_grid_set_fft_planning": (_int, [_ptr, _int]),
     "asp_grid_set_threads": (_int, [_ptr, _int]),
     "asp_grid_get_threads": (_int, [_ptr, _p_int]),
+    "asp_grid_get_slab": (_int, [_ptr, _p_i64, _p_i64, _p_i64]),
     "asp_fft_export_wisdom": (_int, [_str]),
     "asp_fft_import_wisdom": (_int, [_str]),
     # topographies

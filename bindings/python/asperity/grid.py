@@ -136,6 +136,18 @@ class Grid(OwnedHandle):
     def threads(self, count):
         check(lib.asp_grid_set_threads(self.handle, int(count)), "asp_grid_set_threads")
 
+    @property
+    def slab(self):
+        """This process's rows of the grid, ``(local_ny, row_offset)`` (asp_grid_get_slab).
+
+        Every array passed for the grid, or returned for it, holds these rows, shape
+        ``(local_ny, nx)``. The whole grid, ``(ny, 0)``, unless it is distributed over MPI.
+        """
+        rows, offset = ctypes.c_int64(0), ctypes.c_int64(0)
+        check(lib.asp_grid_get_slab(self.handle, ctypes.byref(rows), ctypes.byref(offset), None),
+              "asp_grid_get_slab")
+        return rows.value, offset.value
+
     def __repr__(self):
         if self._dimension == 1:
             return "Grid(%d, %r)" % (self._nx, self._lx)

@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#include "core/fft_planner.hpp"
+
+#include <fftw3.h>
+
+#include "core/loops.hpp"
+
+namespace asp {
+namespace fft_planner {
+
+std::mutex &mutex() {
+  static std::mutex m;
+  return m;
+}
+
+unsigned flags_of(FftPlanning planning) {
+  return planning == FftPlanning::measure ? FFTW_MEASURE : FFTW_ESTIMATE;
+}
+
+bool threads_ready() {
+#ifdef ASPERITY_FFTW_THREADS
+  static const bool ready = fftw_init_threads() != 0;
+  return ready;
+#else
+  return false;
+#endif
+}
+
+PlannerThreads::PlannerThreads(int threads, std::int64_t points) {
+#ifdef ASPERITY_FFTW_THREADS
+  if (threads_ready()) {
+    previous_ = fftw_planner_nthreads();
+    fftw_plan_with_nthreads(threads > 1 && points >= loops::parallel_entries ? threads : 1);
+  }
+#else
+  (void)threads;
+  (void)points;
+#endif
+}
+
+PlannerThreads::~PlannerThreads() {
+#ifdef ASPERITY_FFTW_THREADS
+  if (previous_ > 0) fftw_plan_with_nthreads(previous_);
+#endif
+}
+
+}  // namespace fft_planner
+}  // namespace asp

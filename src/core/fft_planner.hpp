@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// What every FFTW plan of the library is made under: one lock (FFTW's planner is not
+// thread-safe), FFTW's threads set up once, and the thread count of new plans. Shared by the
+// serial transforms (core/fft_engine.cpp) and the distributed ones (core/mpi_partition.cpp).
+#pragma once
+
+#include <cstdint>
+#include <mutex>
+
+#include "core/fft_engine.hpp"
+
+namespace asp {
+namespace fft_planner {
+
+// Every plan creation and destruction and every wisdom operation holds this lock. Executing
+// existing plans is thread-safe.
+std::mutex &mutex();
+
+// FFTW's planner flags for a planning choice.
+unsigned flags_of(FftPlanning planning);
+
+// FFTW's threads, set up once (call under the lock) before the first threaded plan or the
+// first wisdom import or export: wisdom may hold threaded plans, which FFTW reads only once
+// its threads are set up. False if the build has none or FFTW could not set them up.
+bool threads_ready();
+
+// Plans made while it lives, of transforms of `points` points, run on `threads` threads
+// (FFTW's OpenMP threads, when the build has them), or on one below loops::parallel_entries
+// points, where waking threads costs more than the work they would share. FFTW's thread count
+// for new plans is process-wide state: it is set under the lock and put back afterwards, so
+// that other FFTW users in the process keep theirs.
+class PlannerThreads {
+ public:
+  PlannerThreads(int threads, std::int64_t points);
+  ~PlannerThreads();
+  PlannerThreads(const PlannerThreads &) = delete;
+  PlannerThreads &operator=(const PlannerThreads &) = delete;
+
+ private:
+  int previous_ = 0;
+};
+
+}  // namespace fft_planner
+}  // namespace asp

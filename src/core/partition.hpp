@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// How a 2D grid is shared among the processes of a distributed run: each owns a slab of
+// whole rows (y), all nx pixels of each, and the same rows of the half spectrum. Sums and
+// maxima over the slabs become totals through the partition (it is the grid's Reductions),
+// its transforms are FFTW-MPI's, and calls that fail on some processes fail on all of them
+// through agree(). The one implementation is over MPI (core/mpi_partition.hpp, built with
+// ASPERITY_MPI); nothing else in the library knows about MPI.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "core/error.hpp"
+#include "core/fft_engine.hpp"
+#include "core/reductions.hpp"
+
+namespace asp {
+
+// Rows [offset, offset + rows) of the grid.
+struct RowSlab {
+  std::int64_t rows = 0;
+  std::int64_t offset = 0;
+};
+
+class Partition : public Reductions {
+ public:
+  virtual int rank() const = 0;
+  virtual int ranks() const = 0;
+  // The slab this process owns of a grid of nx x ny: the rows its transforms hold.
+  virtual RowSlab slab(std::int64_t nx, std::int64_t ny) const = 0;
+  // The grid's transform on the slabs. Collective.
+  virtual std::unique_ptr<RealTransform> real_transform(std::int64_t nx, std::int64_t ny,
+                                                        FftPlanning planning,
+                                                        int threads) const = 0;
+  // Collective: each process says whether its part of a call failed (failure is null if
+  // not). If any did, every process throws the Error of the lowest failing rank, its
+  // message prefixed with that rank; otherwise it returns.
+  virtual void agree(const Error *failure) const = 0;
+  // Collective: whether values[0..count) hold the same bits on every process.
+  virtual bool same_everywhere(const double *values, int count) const = 0;
+};
+
+}  // namespace asp
