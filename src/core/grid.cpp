@@ -74,10 +74,19 @@ std::shared_ptr<Grid> Grid::create_distributed(std::shared_ptr<const Partition> 
   }
   partition->agree(nullptr);
   const double shape[4] = {static_cast<double>(nx), static_cast<double>(ny), lx, ly};
-  if (!partition->same_everywhere(shape, 4))
+  double theirs[4];  // the first differing process's, the same on every process
+  const int differing = partition->first_differing(shape, 4, theirs);
+  if (differing >= 0) {
+    const auto grid_text = [](const double *s) {
+      return format_number(s[0]) + " x " + format_number(s[1]) + " pixels on a box " +
+             format_number(s[2]) + " x " + format_number(s[3]);
+    };
     throw Error(Status::invalid_argument,
-                "arguments 'nx', 'ny', 'lx' and 'ly' differ between the processes: a "
-                "distributed grid is one grid, created with the same sizes and box on each");
+                "on process " + std::to_string(differing) + " of " +
+                    std::to_string(partition->ranks()) + ": arguments 'nx', 'ny', 'lx' and 'ly' "
+                    "give " + grid_text(theirs) + ", other than process 0's: a distributed "
+                    "grid is one grid, created with the same sizes and box on every process");
+  }
   const RowSlab slab = partition->slab(nx, ny);
   const int threads = environment_threads();
   grid->threads_ = threads > 0 ? threads : 1;

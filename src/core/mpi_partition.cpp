@@ -175,14 +175,18 @@ class MpiPartition final : public Partition {
                     message);
   }
 
-  bool same_everywhere(const double *values, int count) const override {
-    std::vector<double> all(static_cast<std::size_t>(count) * static_cast<std::size_t>(ranks_));
+  int first_differing(const double *values, int count, double *theirs) const override {
+    const auto width = static_cast<std::size_t>(count);
+    std::vector<double> all(width * static_cast<std::size_t>(ranks_));
     MPI_Allgather(values, count, MPI_DOUBLE, all.data(), count, MPI_DOUBLE, communicator_);
-    for (int r = 0; r < ranks_; ++r)
-      if (std::memcmp(all.data() + static_cast<std::size_t>(r) * count, values,
-                      sizeof(double) * static_cast<std::size_t>(count)) != 0)
-        return false;
-    return true;
+    for (int r = 1; r < ranks_; ++r) {
+      const double *other = all.data() + width * static_cast<std::size_t>(r);
+      if (std::memcmp(other, all.data(), sizeof(double) * width) != 0) {
+        std::copy(other, other + width, theirs);
+        return r;
+      }
+    }
+    return -1;
   }
 
  private:

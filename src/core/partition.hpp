@@ -37,8 +37,9 @@ class Partition : public Reductions {
   // not). If any did, every process throws the Error of the lowest failing rank, its
   // message prefixed with that rank; otherwise it returns.
   virtual void agree(const Error *failure) const = 0;
-  // Collective: whether values[0..count) hold the same bits on every process.
-  virtual bool same_everywhere(const double *values, int count) const = 0;
+  // Collective: the first process whose values[0..count) differ from process 0's (not the
+  // same bits), its values copied into theirs; -1 if all hold the same.
+  virtual int first_differing(const double *values, int count, double *theirs) const = 0;
 };
 
 }  // namespace asp

@@ -1,0 +1,357 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// asperity on MPI, through the C API (asperity_mpi.h), run by ctest under mpirun with 1, 2
+// and 3 processes. Each process also builds the same scene on a grid of its own (serial) and
+// compares its rows:
+//   - generators: the distributed surface is the serial one, to the bit, for any process
+//     count, on even and odd grids and on a grid with fewer rows than processes;
+//   - solvers: every algorithm, on a rough non-adhesive and a rough adhesive scene, on an even
+//     and an odd grid, gives the serial pressure and gap to 1e-10 of their largest magnitude,
+//     and the serial scalars to 1e-10 relative. The processes' sums are added in a different
+//     order than the serial ones and FFTW-MPI rounds differently from serial FFTW: rounding
+//     differences of 1e-16 that a solve to 1e-11 amplifies by far less than 1e6;
+//   - bad input on one process (an array with NaN, a wrong count, different grid sizes, a
+//     failing callback, a cancel) is reported on every process with the same status, without
+//     a hang, and the handles stay usable.
+// Prints one line per failed check (on the failing process) and exits non-zero if any failed.
+#include <mpi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "asperity/asperity_mpi.h"
+
+namespace {
+
+int rank = 0, ranks = 1;
+int failures = 0;
+
+void fail(const std::string &what) {
+  std::fprintf(stderr, "[process %d of %d] FAILED: %s\n", rank, ranks, what.c_str());
+  ++failures;
+}
+
+void require_ok(int status, const std::string &what) {
+  if (status != ASP_OK)
+    fail(what + ": status " + std::to_string(status) + ": " + asp_last_error_message());
+}
+
+struct Slab {
+  int64_t rows = 0, offset = 0, pixels = 0;
+};
+
+Slab slab_of(const asp_grid *grid) {
+  Slab s;
+  require_ok(asp_grid_get_slab(grid, &s.rows, &s.offset, &s.pixels), "asp_grid_get_slab");
+  return s;
+}
+
+// This process's rows of a whole field.
+std::vector<double> rows_of(const std::vector<double> &whole, int64_t nx, const Slab &s) {
+  return std::vector<double>(whole.begin() + nx * s.offset,
+                             whole.begin() + nx * (s.offset + s.rows));
+}
+
+// A pointer for an array of this process's rows: NULL when it holds none, as a caller may.
+double *data_or_null(std::vector<double> &v) { return v.empty() ? nullptr : v.data(); }
+
+struct Grids {
+  asp_grid *serial = nullptr, *distributed = nullptr;
+  int64_t nx = 0, ny = 0;
+  Slab slab;
+  Grids(int64_t nx_, int64_t ny_) : nx(nx_), ny(ny_) {
+    require_ok(asp_grid_create_2d(nx, ny, double(nx), double(ny), &serial), "serial grid");
+    require_ok(asp_grid_create_mpi(MPI_COMM_WORLD, nx, ny, double(nx), double(ny), &distributed),
+               "distributed grid");
+    slab = slab_of(distributed);
+  }
+  ~Grids() {
+    asp_grid_destroy(serial);
+    asp_grid_destroy(distributed);
+  }
+};
+
+std::vector<double> rough(asp_grid *grid, int64_t count, uint64_t seed) {
+  std::vector<double> h(static_cast<size_t>(count));
+  require_ok(asp_topography_self_affine(grid, 0.8, 64.0, 16.0, 4.0, ASP_RMS_SLOPE, 0.1,
+                                        static_cast<int64_t>(seed), data_or_null(h), count),
+             "asp_topography_self_affine");
+  return h;
+}
+
+// ---- the processes' slabs ------------------------------------------------------------------
+
+void slabs_cover_the_grid(int64_t nx, int64_t ny) {
+  Grids g(nx, ny);
+  int64_t mine[2] = {g.slab.offset, g.slab.rows};
+  std::vector<int64_t> all(2 * static_cast<size_t>(ranks));
+  MPI_Allgather(mine, 2, MPI_INT64_T, all.data(), 2, MPI_INT64_T, MPI_COMM_WORLD);
+  int64_t next = 0;
+  for (int r = 0; r < ranks; ++r) {
+    const int64_t offset = all[2 * r], rows = all[2 * r + 1];
+    if (rows > 0 && offset != next) fail("slabs of " + std::to_string(ny) + " rows are not in order");
+    if (rows > 0) next = offset + rows;
+  }
+  if (next != ny) fail("slabs of " + std::to_string(ny) + " rows do not cover the grid");
+  if (g.slab.pixels != nx * g.slab.rows) fail("local pixels differ from nx * local rows");
+}
+
+// ---- generators ----------------------------------------------------------------------------
+
+void generators_give_the_serial_surface(int64_t nx, int64_t ny) {
+  Grids g(nx, ny);
+  const std::string where = std::to_string(nx) + "x" + std::to_string(ny);
+  const std::vector<double> whole = rough(g.serial, nx * ny, 42);
+  const std::vector<double> mine = rough(g.distributed, g.slab.pixels, 42);
+  if (mine != rows_of(whole, nx, g.slab)) fail("self-affine surface " + where + " is not the serial one");
+
+  std::vector<double> a(static_cast<size_t>(nx * ny)), b(static_cast<size_t>(g.slab.pixels));
+  require_ok(asp_topography_sinusoid(g.serial, 1.0, 2, 3, a.data(), nx * ny), "sinusoid");
+  require_ok(asp_topography_sinusoid(g.distributed, 1.0, 2, 3, data_or_null(b), g.slab.pixels),
+             "sinusoid");
+  if (b != rows_of(a, nx, g.slab)) fail("sinusoid " + where + " is not the serial one");
+  require_ok(asp_topography_sphere(g.serial, 40.0, a.data(), nx * ny), "sphere");
+  require_ok(asp_topography_sphere(g.distributed, 40.0, data_or_null(b), g.slab.pixels), "sphere");
+  if (b != rows_of(a, nx, g.slab)) fail("sphere " + where + " is not the serial one");
+
+  // Statistics and detrending are of the whole surface.
+  double serial[3], distributed[3];
+  require_ok(asp_topography_statistics(g.serial, whole.data(), nx * ny, &serial[0], &serial[1],
+                                       &serial[2]), "statistics");
+  std::vector<double> local = mine;
+  require_ok(asp_topography_statistics(g.distributed, data_or_null(local), g.slab.pixels,
+                                       &distributed[0], &distributed[1], &distributed[2]),
+             "statistics");
+  for (int k = 0; k < 3; ++k)
+    if (std::fabs(serial[k] - distributed[k]) > 1e-12 * std::fabs(serial[k]))
+      fail("statistic " + std::to_string(k) + " of " + where + " differs");
+  std::vector<double> tilted = whole;
+  for (int64_t j = 0; j < ny; ++j)
+    for (int64_t i = 0; i < nx; ++i) tilted[i + nx * j] += 0.01 * i - 0.02 * j + 3.0;
+  std::vector<double> tilted_mine = rows_of(tilted, nx, g.slab);
+  require_ok(asp_topography_detrend(g.serial, ASP_DETREND_PLANE, tilted.data(), nx * ny), "detrend");
+  require_ok(asp_topography_detrend(g.distributed, ASP_DETREND_PLANE, data_or_null(tilted_mine),
+                                    g.slab.pixels), "detrend");
+  const std::vector<double> expected = rows_of(tilted, nx, g.slab);
+  for (size_t k = 0; k < expected.size(); ++k)
+    if (std::fabs(expected[k] - tilted_mine[k]) > 1e-12) {
+      fail("plane detrending of " + where + " differs");
+      break;
+    }
+}
+
+// ---- solvers -------------------------------------------------------------------------------
+
+enum class Wall { hard, adhesive, soft };
+
+struct Case {
+  const char *algorithm;
+  const char *variable;
+  Wall wall;
+  int control;
+};
+
+struct Outcome {
+  std::vector<double> pressure, gap;
+  double scalars[4] = {0, 0, 0, 0};  // mean pressure, mean gap, contact fraction, elastic energy
+  int converged = 0;
+  int64_t iterations = 0;
+};
+
+Outcome solve(asp_grid *grid, int64_t count, const std::vector<double> &heights, const Case &c,
+              double penetration) {
+  Outcome out;
+  asp_system *system = nullptr;
+  asp_solver *solver = nullptr;
+  require_ok(asp_system_create(grid, 1.0, &system), "asp_system_create");
+  std::vector<double> h = heights;
+  require_ok(asp_system_set_topography(system, data_or_null(h), count), "set_topography");
+  if (c.wall == Wall::adhesive) require_ok(asp_system_set_adhesion(system, 0.02, 0.3), "adhesion");
+  if (c.wall == Wall::soft)
+    require_ok(asp_system_set_soft_wall(system, 0.05, 0.3, 0.01, 0.3), "soft wall");
+  require_ok(asp_solver_create(c.algorithm, &solver), "asp_solver_create");
+  require_ok(asp_solver_set_tolerance(solver, 1e-11), "tolerance");
+  require_ok(asp_solver_set_max_iterations(solver, 20000), "max_iterations");
+  if (*c.variable != '\0')
+    require_ok(asp_solver_set_option_string(solver, "variable", c.variable), "variable");
+  const double value = c.control == ASP_CONTROL_PENETRATION ? penetration : 0.005;
+  require_ok(asp_solver_solve(solver, system, c.control, value), std::string("solve ") + c.algorithm);
+  require_ok(asp_solver_converged(solver, &out.converged), "converged");
+  require_ok(asp_solver_iterations(solver, &out.iterations), "iterations");
+  out.pressure.resize(static_cast<size_t>(count));
+  out.gap.resize(static_cast<size_t>(count));
+  require_ok(asp_system_get_field(system, ASP_FIELD_PRESSURE, data_or_null(out.pressure), count),
+             "pressure");
+  require_ok(asp_system_get_field(system, ASP_FIELD_GAP, data_or_null(out.gap), count), "gap");
+  const int keys[4] = {ASP_MEAN_PRESSURE, ASP_MEAN_GAP, ASP_CONTACT_FRACTION, ASP_ELASTIC_ENERGY};
+  for (int k = 0; k < 4; ++k) require_ok(asp_system_get(system, keys[k], &out.scalars[k]), "get");
+  asp_solver_destroy(solver);
+  asp_system_destroy(system);
+  return out;
+}
+
+double largest(const std::vector<double> &v) {
+  double m = 0.0;
+  for (double x : v) m = std::max(m, std::fabs(x));
+  return m;
+}
+
+double largest_difference(const std::vector<double> &a, const std::vector<double> &b) {
+  double m = 0.0;
+  for (size_t k = 0; k < a.size(); ++k) m = std::max(m, std::fabs(a[k] - b[k]));
+  return m;
+}
+
+void solver_gives_the_serial_result(const Case &c, int64_t nx, int64_t ny) {
+  Grids g(nx, ny);
+  const std::string name = std::string(c.algorithm) + (*c.variable ? std::string("/") + c.variable : "") +
+                           (c.wall == Wall::hard ? " hard" : c.wall == Wall::adhesive ? " adhesive" : " soft") +
+                           " " + std::to_string(nx) + "x" + std::to_string(ny);
+  const std::vector<double> whole = rough(g.serial, nx * ny, 7);
+  const double range = *std::max_element(whole.begin(), whole.end()) -
+                       *std::min_element(whole.begin(), whole.end());
+  const double penetration = 0.15 * range;
+  const Outcome serial = solve(g.serial, nx * ny, whole, c, penetration);
+  const Outcome distributed = solve(g.distributed, g.slab.pixels, rows_of(whole, nx, g.slab), c,
+                                    penetration);
+  if (!serial.converged || !distributed.converged) {
+    fail(name + ": did not converge (serial " + std::to_string(serial.converged) +
+         ", distributed " + std::to_string(distributed.converged) + ")");
+    return;
+  }
+  // The largest magnitudes are those of the whole fields, the same on every process.
+  double scale[2] = {largest(serial.pressure), largest(serial.gap)};
+  const std::vector<double> p = rows_of(serial.pressure, nx, g.slab), u = rows_of(serial.gap, nx, g.slab);
+  double difference[2] = {largest_difference(p, distributed.pressure),
+                          largest_difference(u, distributed.gap)};
+  MPI_Allreduce(MPI_IN_PLACE, difference, 2, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+  char line[256];
+  std::snprintf(line, sizeof line, "%s: pressure %.1e, gap %.1e of their largest; %lld/%lld iterations",
+                name.c_str(), difference[0] / scale[0], difference[1] / scale[1],
+                static_cast<long long>(serial.iterations), static_cast<long long>(distributed.iterations));
+  if (rank == 0) std::printf("%s\n", line);
+  if (difference[0] > 1e-10 * scale[0] || difference[1] > 1e-10 * scale[1]) fail(line);
+  for (int k = 0; k < 4; ++k)
+    if (std::fabs(serial.scalars[k] - distributed.scalars[k]) > 1e-10 * std::fabs(serial.scalars[k]) + 1e-300)
+      fail(name + ": scalar " + std::to_string(k) + " " + std::to_string(serial.scalars[k]) + " vs " +
+           std::to_string(distributed.scalars[k]));
+}
+
+// ---- bad input on one process --------------------------------------------------------------
+
+void expect_everywhere(int status, int expected, const std::string &what) {
+  if (status != expected) {
+    fail(what + ": status " + std::to_string(status) + ", expected " + std::to_string(expected) +
+         " (" + asp_last_error_message() + ")");
+    return;
+  }
+  if (ranks > 1 && std::strstr(asp_last_error_message(), "on process") == nullptr)
+    fail(what + ": the message does not name the failing process: " + asp_last_error_message());
+}
+
+int failing_callback(int64_t n, const double *, double *phi, double *dphi, double *d2phi, void *) {
+  for (int64_t i = 0; i < n; ++i) {
+    phi[i] = 0.0;
+    dphi[i] = 0.0;
+    if (d2phi) d2phi[i] = 0.0;
+  }
+  return rank == ranks - 1 ? 1 : 0;  // the last process's callback fails
+}
+
+int cancel_on_last(int64_t iteration, double, double, void *) {
+  return rank == ranks - 1 && iteration >= 3 ? 1 : 0;
+}
+
+void bad_input_on_one_process_fails_on_all() {
+  const int last = ranks - 1;
+  Grids g(32, 24);
+  std::vector<double> h = rough(g.distributed, g.slab.pixels, 3);
+  asp_system *system = nullptr;
+  require_ok(asp_system_create(g.distributed, 1.0, &system), "system");
+
+  std::vector<double> bad = h;
+  if (rank == last && !bad.empty()) bad[0] = NAN;
+  expect_everywhere(asp_system_set_topography(system, data_or_null(bad), g.slab.pixels),
+                    ASP_ERR_INVALID_ARGUMENT, "NaN heights on the last process");
+  const int64_t count = rank == last ? g.slab.pixels + 1 : g.slab.pixels;
+  std::vector<double> longer(static_cast<size_t>(g.slab.pixels + 1), 0.0);
+  expect_everywhere(asp_system_set_topography(system, longer.data(), count), ASP_ERR_SIZE_MISMATCH,
+                    "a wrong count on the last process");
+  // The handles are still usable.
+  require_ok(asp_system_set_topography(system, data_or_null(h), g.slab.pixels), "good heights after bad");
+
+  // Different sizes on one process.
+  asp_grid *odd = nullptr;
+  const int status = asp_grid_create_mpi(MPI_COMM_WORLD, rank == last ? 33 : 32, 24, 32.0, 24.0, &odd);
+  if (ranks > 1) expect_everywhere(status, ASP_ERR_INVALID_ARGUMENT, "different sizes on one process");
+  asp_grid_destroy(odd);
+
+  // The free substrate is not distributed.
+  asp_system *free_system = nullptr;
+  const int free_status = asp_system_create_free(g.distributed, 1.0, &free_system);
+  if (free_status != ASP_ERR_UNSUPPORTED) fail("a free system on a distributed grid was not refused");
+  asp_system_destroy(free_system);
+
+  // A callback that fails on one process fails the solve on all.
+  asp_solver *solver = nullptr;
+  require_ok(asp_solver_create("lbfgs", &solver), "solver");
+  require_ok(asp_system_set_potential(system, failing_callback, nullptr, 0), "potential");
+  const int solved = asp_solver_solve(solver, system, ASP_CONTROL_PENETRATION, 0.1);
+  if (ranks > 1 && solved != ASP_ERR_CALLBACK)
+    fail("a callback failing on one process: status " + std::to_string(solved));
+
+  // A cancel asked on one process stops every process.
+  require_ok(asp_system_set_soft_wall(system, 0.05, 0.3, 0.01, 0.3), "soft wall");
+  require_ok(asp_solver_set_progress(solver, cancel_on_last, nullptr), "progress");
+  require_ok(asp_solver_set_tolerance(solver, 1e-14), "tolerance");
+  require_ok(asp_solver_solve(solver, system, ASP_CONTROL_PENETRATION, 0.1), "cancelled solve");
+  int reason = 0;
+  require_ok(asp_solver_termination(solver, &reason), "termination");
+  if (reason != ASP_TERMINATION_CANCELLED) fail("a cancel on one process did not stop every process");
+  asp_solver_destroy(solver);
+  asp_system_destroy(system);
+}
+
+}  // namespace
+
+int main(int argc, char **argv) {
+  MPI_Init(&argc, &argv);
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+
+  slabs_cover_the_grid(64, 64);
+  slabs_cover_the_grid(45, 37);
+  slabs_cover_the_grid(16, 2);  // fewer rows than three processes
+  generators_give_the_serial_surface(64, 48);
+  generators_give_the_serial_surface(45, 37);
+  generators_give_the_serial_surface(16, 2);
+  bad_input_on_one_process_fails_on_all();
+
+  const Case cases[] = {
+      {"pk", "", Wall::hard, ASP_CONTROL_MEAN_PRESSURE},
+      {"bugnicourt", "pressure", Wall::hard, ASP_CONTROL_MEAN_PRESSURE},
+      {"bugnicourt", "gap", Wall::adhesive, ASP_CONTROL_PENETRATION},
+      {"lbfgsb", "pressure", Wall::hard, ASP_CONTROL_PENETRATION},
+      {"lbfgsb", "gap", Wall::adhesive, ASP_CONTROL_PENETRATION},
+      {"lbfgs", "", Wall::soft, ASP_CONTROL_PENETRATION},
+      {"lbfgs_fourier", "", Wall::soft, ASP_CONTROL_MEAN_PRESSURE},
+      {"fire", "", Wall::soft, ASP_CONTROL_PENETRATION},
+      {"fire_mass_weighted", "", Wall::soft, ASP_CONTROL_PENETRATION},
+      {"gfmd", "", Wall::soft, ASP_CONTROL_PENETRATION},
+  };
+  for (const Case &c : cases) {
+    solver_gives_the_serial_result(c, 64, 64);
+    solver_gives_the_serial_result(c, 45, 37);
+  }
+  solver_gives_the_serial_result(cases[0], 16, 2);
+  solver_gives_the_serial_result(cases[5], 16, 2);
+
+  int total = failures;
+  MPI_Allreduce(MPI_IN_PLACE, &total, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+  if (rank == 0) std::printf("%s: %d failed checks on %d processes\n", total ? "FAILED" : "passed", total, ranks);
+  MPI_Finalize();
+  return total == 0 ? 0 : 1;
+}
