@@ -6,10 +6,12 @@ set -euo pipefail
 
 # The core library needs FFTW only; the command reads scene files (toml++) and measured
 # surfaces (.x3p: libzip, pugixml) and draws its pictures with gnuplot (optional at run time);
-# the Python package needs NumPy; the tests build the Debian packages (dpkg-dev), check the ABI
-# (abigail-tools) and build the API reference (doxygen).
+# the Python package needs NumPy; distributed grids need MPI (Open MPI) and FFTW's MPI
+# transforms, and their Python side mpi4py; the tests build the Debian packages (dpkg-dev),
+# check the ABI (abigail-tools) and build the API reference (doxygen).
 packages=(g++ gfortran cmake make pkg-config libfftw3-dev googletest libgtest-dev
           libtomlplusplus-dev libzip-dev libpugixml-dev gnuplot-nox
+          libopenmpi-dev openmpi-bin libfftw3-mpi-dev python3-mpi4py
           python3-numpy dpkg-dev abigail-tools doxygen)
 
 missing=()

@@ -205,7 +205,8 @@ ASP_EXPORT int asp_fft_export_wisdom(const char *path);
 ASP_EXPORT int asp_fft_import_wisdom(const char *path);
 
 /* ============================================================================================
- * Topographies: functions that fill a caller's array of n = nx*ny heights on a grid.
+ * Topographies: functions that fill a caller's array of n = nx*ny heights on a grid (on a
+ * distributed grid, the n = local_pixels heights of this process's rows: asp_grid_get_slab).
  * Caller arrays, inputs and outputs alike, need no particular alignment: NumPy slices (a[1:])
  * and Fortran array sections are fine, because the library copies them into its own buffers
  * before any Fourier transform. Every output is finite: a request whose numbers doubles
@@ -349,7 +350,8 @@ ASP_EXPORT int asp_system_create_free(const asp_grid *grid, double contact_modul
                                       asp_system **out);
 ASP_EXPORT void asp_system_destroy(asp_system *system);
 
-/* Copies n = nx*ny finite heights whose range max - min is a finite double. Resets the state
+/* Copies n = nx*ny finite heights (local_pixels of this process's rows on a distributed grid)
+ * whose range max - min is a finite double. Resets the state
  * to zero pressure (a new surface makes the old state meaningless). */
 ASP_EXPORT int asp_system_set_topography(asp_system *system, const double *heights, int64_t n);
 
@@ -508,7 +510,8 @@ ASP_EXPORT int asp_system_reset(asp_system *system);
                                       for any other interaction, soft walls included) */
 ASP_EXPORT int asp_system_get(const asp_system *system, int key, double *value);
 
-/* Fields of the current state, copied into the caller's array of n = nx*ny doubles. */
+/* Fields of the current state, copied into the caller's array of n = nx*ny doubles (this
+ * process's local_pixels on a distributed grid). */
 #define ASP_FIELD_PRESSURE 401
 #define ASP_FIELD_GAP 402
 #define ASP_FIELD_DISPLACEMENT 403

@@ -1,0 +1,153 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// Strong scaling over MPI processes: the solves of asperity_thread_scaling (pk, bugnicourt and
+// lbfgs_fourier on a self-affine surface, the same scenes) on a grid distributed over the
+// processes this program is started with, one thread each. For each solver and size: the
+// time per iteration of a fixed number of iterations (the tolerance out of reach, the slowest
+// process's time), one FFT pair of the distributed grid in the same run, their ratio, and the
+// peak resident memory per pixel of a process (its VmHWM over its pixels: the whole process,
+// MPI's buffers included). Run it with 1 and with 2 processes and compare:
+//
+//   mpirun -np 1 ./build/bench/asperity_mpi_scaling --size 2048 --iterations 20
+//   mpirun -np 2 ./build/bench/asperity_mpi_scaling --size 2048 --iterations 20
+//
+// usage: asperity_mpi_scaling [--size N]... [--iterations K] [--solver NAME]...
+#include <mpi.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "core/mpi_partition.hpp"
+#include "physics/surface_statistics.hpp"
+#include "physics/system.hpp"
+#include "physics/topography.hpp"
+#include "solvers/solver.hpp"
+
+namespace {
+
+int rank = 0, ranks = 1;
+
+// The slowest process's time of `work`, started together.
+template <class Work>
+double timed(Work &&work) {
+  MPI_Barrier(MPI_COMM_WORLD);
+  const double start = MPI_Wtime();
+  work();
+  double seconds = MPI_Wtime() - start;
+  MPI_Allreduce(MPI_IN_PLACE, &seconds, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+  return seconds;
+}
+
+// The process's peak resident memory in bytes (VmHWM), 0 if unknown.
+double peak_memory() {
+  std::ifstream status("/proc/self/status");
+  std::string key;
+  while (status >> key) {
+    if (key == "VmHWM:") {
+      double kilobytes = 0.0;
+      status >> kilobytes;
+      return 1024.0 * kilobytes;
+    }
+    status.ignore(1 << 12, '\n');
+  }
+  return 0.0;
+}
+
+double fft_pair_seconds(const asp::Grid &grid) {
+  asp::Field f = grid.make_field();
+  for (std::size_t i = 0; i < f.size(); ++i) f[i] = static_cast<double>(i % 7);
+  asp::Spectrum s = grid.make_spectrum();
+  const asp::RealTransform &fft = grid.fft();
+  const int repeats = std::max(3, static_cast<int>(2e7 / static_cast<double>(grid.n_pixels())));
+  double best = 1e300;
+  for (int batch = 0; batch < 5; ++batch)
+    best = std::min(best, timed([&] {
+                      for (int k = 0; k < repeats; ++k) {
+                        fft.forward(f.data(), s.data());
+                        fft.backward(s.data(), f.data());
+                      }
+                    }) / repeats);
+  return best;
+}
+
+void run(const char *algorithm, std::int64_t n, int iterations) {
+  auto grid = asp::Grid::create_distributed(asp::make_mpi_partition(MPI_COMM_WORLD), n, n,
+                                            static_cast<double>(n), static_cast<double>(n));
+  grid->set_fft_planning(asp::FftPlanning::estimate);
+  grid->set_threads(1);
+  asp::SelfAffineParameters p;
+  p.hurst = 0.8;
+  p.long_cutoff = grid->lx();
+  p.rolloff = 0.25 * grid->lx();
+  p.short_cutoff = 4.0;
+  p.norm = asp::RoughnessNorm::rms_slope;
+  p.target = 0.1;
+  p.seed = 1;
+  std::vector<double> h(static_cast<std::size_t>(grid->local_pixels()));
+  asp::self_affine_topography(*grid, p, h.data());
+  asp::System system(grid, 1.0);
+  system.set_topography(h.data());
+  asp::Control control = asp::Control::mean_pressure;
+  double value = 0.005;
+  if (std::strcmp(algorithm, "lbfgs_fourier") == 0) {
+    const double rc = 1.0 / asp::surface_statistics(*grid, h.data()).rms_curvature;
+    system.set_soft_wall(2.10e3 * rc, 0.5, 2.05 * rc, 0.5);
+    control = asp::Control::penetration;
+    value = 0.05 * system.height_range();
+  }
+  asp::Solver solver(algorithm);
+  solver.set_option("tolerance", 1e-300);
+  solver.set_option("stall_window", 0.0);
+  solver.set_option("max_iterations", 2.0);
+  solver.solve(system, control, value);  // plans and tables, untimed
+  system.reset_state();
+  solver.set_option("max_iterations", static_cast<double>(iterations));
+  const double seconds = timed([&] { solver.solve(system, control, value); });
+  const double per_iteration = seconds / static_cast<double>(solver.report().iterations);
+  const double pair = fft_pair_seconds(*grid);
+  double memory = peak_memory() / static_cast<double>(std::max<std::int64_t>(1, grid->local_pixels()));
+  MPI_Allreduce(MPI_IN_PLACE, &memory, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+  if (rank == 0)
+    std::printf("%-14s %6lld %9d %12.2f %10.2f %10.2f %14.0f\n", algorithm,
+                static_cast<long long>(n), ranks, 1e3 * per_iteration, 1e3 * pair,
+                per_iteration / pair, memory);
+  std::fflush(stdout);
+}
+
+}  // namespace
+
+int main(int argc, char **argv) {
+  MPI_Init(&argc, &argv);
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  std::vector<std::int64_t> sizes;
+  std::vector<std::string> solvers;
+  int iterations = 20;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    const bool has_value = i + 1 < argc;
+    if (arg == "--size" && has_value) sizes.push_back(std::atoll(argv[++i]));
+    else if (arg == "--iterations" && has_value) iterations = std::atoi(argv[++i]);
+    else if (arg == "--solver" && has_value) solvers.push_back(argv[++i]);
+    else {
+      if (rank == 0)
+        std::fprintf(stderr, "usage: %s [--size N]... [--iterations K] [--solver NAME]...\n",
+                     argv[0]);
+      MPI_Finalize();
+      return 2;
+    }
+  }
+  if (sizes.empty()) sizes = {2048, 4096};
+  if (solvers.empty()) solvers = {"pk", "bugnicourt", "lbfgs_fourier"};
+  if (rank == 0)
+    std::printf("%-14s %6s %9s %12s %10s %10s %14s\n", "solver", "size", "processes", "ms/iter",
+                "pair ms", "pairs/it", "peak B/pixel");
+  for (std::int64_t n : sizes)
+    for (const std::string &algorithm : solvers) run(algorithm.c_str(), n, iterations);
+  MPI_Finalize();
+  return 0;
+}
