@@ -57,7 +57,8 @@ ASP_EXPORT int asp_grid_create_mpi(MPI_Comm comm, int64_t nx, int64_t ny, double
 
 /* The same, taking a Fortran communicator handle (MPI_Fint, the integer of mpi_f08's
  * MPI_Comm%MPI_VAL or of the mpi module); for the Fortran module and other languages whose
- * MPI bindings hold Fortran handles. */
+ * MPI bindings hold Fortran handles. A library built without MPI exports it too (with an
+ * int communicator), returning ASP_ERR_UNSUPPORTED, so that bindings link either way. */
 ASP_EXPORT int asp_grid_create_mpi_f(MPI_Fint comm, int64_t nx, int64_t ny, double lx,
                                      double ly, asp_grid **out);
 
