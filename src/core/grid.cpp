@@ -87,11 +87,13 @@ std::shared_ptr<Grid> Grid::create_distributed(std::shared_ptr<const Partition> 
                     "give " + grid_text(theirs) + ", other than process 0's: a distributed "
                     "grid is one grid, created with the same sizes and box on every process");
   }
-  const RowSlab slab = partition->slab(nx, ny);
+  const Slab slab = partition->slab(nx, ny);
   const int threads = environment_threads();
   grid->threads_ = threads > 0 ? threads : 1;
   grid->local_rows_ = slab.rows;
   grid->row_offset_ = slab.offset;
+  grid->spectral_columns_ = slab.columns;
+  grid->column_offset_ = slab.column_offset;
   grid->partition_ = std::move(partition);
   return grid;
 }
@@ -106,7 +108,10 @@ Grid::Grid(int dimension, std::int64_t nx, std::int64_t ny, double lx, double ly
       local_rows_(ny) {}
 
 SpectralLayout Grid::half_spectrum() const {
-  return SpectralLayout(Packing::half_spectrum, nx_, ny_, lx_, ly_, local_rows_, row_offset_);
+  if (partition_)
+    return SpectralLayout(Packing::transposed_half_spectrum, nx_, ny_, lx_, ly_,
+                          spectral_columns_, column_offset_);
+  return SpectralLayout(Packing::half_spectrum, nx_, ny_, lx_, ly_);
 }
 
 void Grid::require_serial(const char *what) const {

@@ -58,10 +58,12 @@ class Grid {
   // The partition of a distributed grid, null otherwise.
   const Partition *partition() const { return partition_.get(); }
 
-  // The r2c half spectrum of the grid, this process's rows of it: kx in [0, nx/2], ky in
-  // [row_offset, row_offset + local_rows).
+  // The r2c half spectrum of the grid, kx in [0, nx/2]: all of it by rows on a serial grid;
+  // on a distributed one this process's columns kx of it, transposed (core/partition.hpp).
   SpectralLayout half_spectrum() const;
-  std::int64_t local_spectral() const { return (nx_ / 2 + 1) * local_rows_; }
+  std::int64_t local_spectral() const {
+    return partition_ ? spectral_columns_ * ny_ : (nx_ / 2 + 1) * local_rows_;
+  }
 
   // Fields and spectra of this process's rows.
   Field make_field() const { return Field(static_cast<std::size_t>(local_pixels()), 0.0); }
@@ -99,6 +101,7 @@ class Grid {
   FftPlanning planning_ = FftPlanning::measure;
   int threads_;
   std::int64_t local_rows_, row_offset_ = 0;
+  std::int64_t spectral_columns_ = 0, column_offset_ = 0;  // of a distributed grid
   std::shared_ptr<const Partition> partition_;
   mutable std::mutex plans_mutex_;
   mutable std::unique_ptr<RealTransform> distributed_plan_;

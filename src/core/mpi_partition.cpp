@@ -33,11 +33,13 @@ Sizes sizes_of(std::int64_t nx, std::int64_t ny) {
           static_cast<ptrdiff_t>(nx / 2 + 1)};
 }
 
-// FFTW-MPI's r2c and c2r of a distributed grid. FFTW-MPI wants the real rows padded to
-// 2 (nx/2 + 1) and room of its own choosing (alloc_local complex numbers) for the
-// transposes inside; the library's fields are unpadded, so each transform copies through
-// one buffer of the plan's and runs in place there. Executed by one thread per process at
-// a time, as every collective call of the library.
+// FFTW-MPI's r2c and c2r of a distributed grid, from this process's rows to its columns of
+// the transposed half spectrum (FFTW_MPI_TRANSPOSED_OUT) and back (_IN): a 2D transform then
+// needs one global transpose each way instead of two. FFTW-MPI wants the real rows padded to
+// 2 (nx/2 + 1) and room of its own choosing (alloc_local complex numbers) for the transpose;
+// the library's fields are unpadded, so each transform copies through one buffer of the
+// plan's and runs in place there. Executed by one thread per process at a time, as every
+// collective call of the library.
 class MpiRealFft final : public RealTransform {
  public:
   MpiRealFft(std::int64_t nx, std::int64_t ny, MPI_Comm communicator, FftPlanning planning,
@@ -46,17 +48,21 @@ class MpiRealFft final : public RealTransform {
     const Sizes s = sizes_of(nx, ny);
     std::lock_guard<std::mutex> lock(fft_planner::mutex());
     fftw_mpi_ready();
-    ptrdiff_t local_rows = 0, offset = 0;
-    const ptrdiff_t alloc =
-        fftw_mpi_local_size_2d(s.rows, s.complex_columns, communicator, &local_rows, &offset);
+    ptrdiff_t local_rows = 0, offset = 0, local_columns = 0, column_offset = 0;
+    const ptrdiff_t alloc = fftw_mpi_local_size_2d_transposed(
+        s.rows, s.complex_columns, communicator, &local_rows, &offset, &local_columns,
+        &column_offset);
     rows_ = local_rows;
+    spectral_ = static_cast<std::int64_t>(local_columns) * ny;
     buffer_ = Spectrum(static_cast<std::size_t>(std::max<ptrdiff_t>(alloc, 1)));
     auto *c = reinterpret_cast<fftw_complex *>(buffer_.data());
     auto *r = reinterpret_cast<double *>(buffer_.data());
     const fft_planner::PlannerThreads planner_threads(threads, nx * local_rows);
     const unsigned flags = fft_planner::flags_of(planning);
-    r2c_ = fftw_mpi_plan_dft_r2c_2d(s.rows, s.columns, r, c, communicator, flags);
-    c2r_ = fftw_mpi_plan_dft_c2r_2d(s.rows, s.columns, c, r, communicator, flags);
+    r2c_ = fftw_mpi_plan_dft_r2c_2d(s.rows, s.columns, r, c, communicator,
+                                    flags | FFTW_MPI_TRANSPOSED_OUT);
+    c2r_ = fftw_mpi_plan_dft_c2r_2d(s.rows, s.columns, c, r, communicator,
+                                    flags | FFTW_MPI_TRANSPOSED_IN);
     if (r2c_ == nullptr || c2r_ == nullptr) {
       if (r2c_ != nullptr) fftw_destroy_plan(r2c_);
       if (c2r_ != nullptr) fftw_destroy_plan(c2r_);
@@ -70,17 +76,17 @@ class MpiRealFft final : public RealTransform {
   }
 
   void forward(const double *real, Complex *spectrum) const override {
-    const std::int64_t padded = 2 * (nx_ / 2 + 1), columns = nx_ / 2 + 1;
+    const std::int64_t padded = 2 * (nx_ / 2 + 1);
     auto *r = reinterpret_cast<double *>(buffer_.data());
     for (std::int64_t j = 0; j < rows_; ++j)
       std::copy(real + nx_ * j, real + nx_ * (j + 1), r + padded * j);
     fftw_execute(r2c_);
-    std::copy(buffer_.begin(), buffer_.begin() + columns * rows_, spectrum);
+    std::copy(buffer_.begin(), buffer_.begin() + spectral_, spectrum);
   }
 
   void backward(Complex *spectrum, double *real) const override {
-    const std::int64_t padded = 2 * (nx_ / 2 + 1), columns = nx_ / 2 + 1;
-    std::copy(spectrum, spectrum + columns * rows_, buffer_.begin());
+    const std::int64_t padded = 2 * (nx_ / 2 + 1);
+    std::copy(spectrum, spectrum + spectral_, buffer_.begin());
     fftw_execute(c2r_);
     const auto *r = reinterpret_cast<const double *>(buffer_.data());
     for (std::int64_t j = 0; j < rows_; ++j)
@@ -88,7 +94,7 @@ class MpiRealFft final : public RealTransform {
   }
 
  private:
-  std::int64_t nx_, rows_ = 0;
+  std::int64_t nx_, rows_ = 0, spectral_ = 0;  // rows, and entries of the spectral columns
   mutable Spectrum buffer_;
   fftw_plan r2c_ = nullptr, c2r_ = nullptr;
 };
@@ -109,17 +115,21 @@ class MpiPartition final : public Partition {
   int rank() const override { return rank_; }
   int ranks() const override { return ranks_; }
 
-  RowSlab slab(std::int64_t nx, std::int64_t ny) const override {
+  Slab slab(std::int64_t nx, std::int64_t ny) const override {
     const Sizes s = sizes_of(nx, ny);
-    ptrdiff_t rows = 0, offset = 0;
+    ptrdiff_t rows = 0, offset = 0, columns = 0, column_offset = 0;
     {
       std::lock_guard<std::mutex> lock(fft_planner::mutex());
       fftw_mpi_ready();
-      fftw_mpi_local_size_2d(s.rows, s.complex_columns, communicator_, &rows, &offset);
+      fftw_mpi_local_size_2d_transposed(s.rows, s.complex_columns, communicator_, &rows, &offset,
+                                        &columns, &column_offset);
     }
-    // FFTW gives a process without rows an offset of its own choosing; rows end at ny.
-    if (rows == 0) offset = static_cast<ptrdiff_t>(ny);
-    return {static_cast<std::int64_t>(rows), static_cast<std::int64_t>(offset)};
+    // FFTW gives a process without rows (columns) an offset of its own choosing; they end at
+    // ny (nx/2 + 1).
+    if (rows == 0) offset = s.rows;
+    if (columns == 0) column_offset = s.complex_columns;
+    return {static_cast<std::int64_t>(rows), static_cast<std::int64_t>(offset),
+            static_cast<std::int64_t>(columns), static_cast<std::int64_t>(column_offset)};
   }
 
   std::unique_ptr<RealTransform> real_transform(std::int64_t nx, std::int64_t ny,

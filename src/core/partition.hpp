@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // How a 2D grid is shared among the processes of a distributed run: each owns a slab of
-// whole rows (y), all nx pixels of each, and the same rows of the half spectrum. Sums and
+// whole rows (y), all nx pixels of each, and a slab of whole columns (kx) of the half
+// spectrum, which FFTW-MPI leaves transposed (Packing::transposed_half_spectrum: a
+// transposed transform skips one of the two global transposes of a 2D FFT each way). Sums and
 // maxima over the slabs become totals through the partition (it is the grid's Reductions),
 // its transforms are FFTW-MPI's, and calls that fail on some processes fail on all of them
 // through agree(). The one implementation is over MPI (core/mpi_partition.hpp, built with
@@ -17,19 +19,23 @@
 
 namespace asp {
 
-// Rows [offset, offset + rows) of the grid.
-struct RowSlab {
+// Rows [offset, offset + rows) of the grid, and columns [column_offset, column_offset +
+// columns) of its half spectrum.
+struct Slab {
   std::int64_t rows = 0;
   std::int64_t offset = 0;
+  std::int64_t columns = 0;
+  std::int64_t column_offset = 0;
 };
 
 class Partition : public Reductions {
  public:
   virtual int rank() const = 0;
   virtual int ranks() const = 0;
-  // The slab this process owns of a grid of nx x ny: the rows its transforms hold.
-  virtual RowSlab slab(std::int64_t nx, std::int64_t ny) const = 0;
-  // The grid's transform on the slabs. Collective.
+  // The slab this process owns of a grid of nx x ny: the rows and spectral columns its
+  // transforms hold.
+  virtual Slab slab(std::int64_t nx, std::int64_t ny) const = 0;
+  // The grid's transform on the slabs, from rows to transposed columns and back. Collective.
   virtual std::unique_ptr<RealTransform> real_transform(std::int64_t nx, std::int64_t ny,
                                                         FftPlanning planning,
                                                         int threads) const = 0;

@@ -3,7 +3,8 @@
 // and 3 processes. Each process also builds the same scene on a grid of its own (serial) and
 // compares its rows:
 //   - generators: the distributed surface is the serial one, to the bit, for any process
-//     count, on even and odd grids and on a grid with fewer rows than processes;
+//     count, on even and odd grids, on a grid with fewer rows than processes and on one with
+//     fewer spectral columns (which the processes hold of the transposed spectrum);
 //   - solvers: every algorithm, on a rough non-adhesive and a rough adhesive scene, on an even
 //     and an odd grid, gives the serial pressure and gap to 1e-10 of their largest magnitude,
 //     and the serial scalars to 1e-10 relative. The processes' sums are added in a different
@@ -325,9 +326,11 @@ int main(int argc, char **argv) {
   slabs_cover_the_grid(64, 64);
   slabs_cover_the_grid(45, 37);
   slabs_cover_the_grid(16, 2);  // fewer rows than three processes
+  slabs_cover_the_grid(2, 45);  // fewer spectral columns (2) than three processes
   generators_give_the_serial_surface(64, 48);
   generators_give_the_serial_surface(45, 37);
   generators_give_the_serial_surface(16, 2);
+  generators_give_the_serial_surface(2, 45);
   bad_input_on_one_process_fails_on_all();
 
   const Case cases[] = {
@@ -348,6 +351,8 @@ int main(int argc, char **argv) {
   }
   solver_gives_the_serial_result(cases[0], 16, 2);
   solver_gives_the_serial_result(cases[5], 16, 2);
+  solver_gives_the_serial_result(cases[0], 2, 45);
+  solver_gives_the_serial_result(cases[6], 2, 45);
 
   int total = failures;
   MPI_Allreduce(MPI_IN_PLACE, &total, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
