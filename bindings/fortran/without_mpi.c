@@ -4,6 +4,7 @@
  * fail to link against such a library, MPI or not. Distributed grids are not there to make:
  * ASP_ERR_UNSUPPORTED (the library's last error message is left as it was). Part of
  * asperity_fortran only in builds without MPI. */
+#include <stddef.h>
 #include <stdint.h>
 
 #include "asperity/asperity.h"
