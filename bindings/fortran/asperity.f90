@@ -4,7 +4,18 @@
 ! Every constant and every function of include/asperity/asperity.h has a public counterpart of
 ! the same name here (the test fortran.mirrors_header checks it): constants are integer(c_int)
 ! parameters; each function is either its bind(c) interface itself or a generic interface of
-! that name which holds the bind(c) interface together with the module's own variants.
+! that name which holds the bind(c) interface together with the module's own variants. So
+! does every function of include/asperity/asperity_mpi.h but asp_grid_create_mpi, whose C
+! MPI_Comm Fortran cannot pass: the module's asp_grid_create_mpi takes MPI's Fortran handle.
+!
+! Distributed grids (a libasperity built with MPI): after MPI_Init, every process calls
+!
+!   status = asp_grid_create_mpi(MPI_COMM_WORLD, nx, ny, lx, ly, grid)  ! comm%MPI_VAL (mpi_f08)
+!   status = asp_grid_get_slab(grid, local_ny, row_offset, local_pixels)
+!
+! and then makes the same calls as the others, in the same order (they are collective). Each
+! process holds local_ny whole rows from row_offset on (0-based): its arrays are h(nx, local_ny)
+! with counts of local_pixels; scalar results are the whole grid's, the same on every process.
 !
 ! Kinds. Handles are type(c_ptr); reals are real(c_double) only (a default real, single
 ! precision on every common compiler, is refused at compile time rather than widened
@@ -114,6 +125,7 @@ module asperity
             asp_grid_get_box, asp_grid_set_fft_planning, asp_grid_set_threads, &
             asp_grid_get_threads, asp_grid_get_slab, asp_fft_export_wisdom, &
             asp_fft_import_wisdom
+  public :: asp_grid_create_mpi, asp_grid_create_mpi_f
   public :: asp_topography_flat, asp_topography_sphere, asp_topography_paraboloid, &
             asp_topography_sinusoid, asp_topography_double_sinewave, &
             asp_topography_self_affine, asp_topography_statistics, asp_topography_detrend, &
@@ -429,6 +441,27 @@ module asperity
       integer(c_int) :: c_asp_grid_create_2d
     end function
     module procedure grid_create_2d_int
+  end interface
+  ! asperity_mpi.h. asp_grid_create_mpi takes a C MPI_Comm, which Fortran cannot hold; the
+  ! module's asp_grid_create_mpi takes the communicator as MPI's Fortran bindings hold it (a
+  ! default integer: the handle of the mpi module, or comm%MPI_VAL of mpi_f08) and calls
+  ! asp_grid_create_mpi_f, which converts it in C. Only declared here, so the module compiles
+  ! without MPI; a libasperity built without MPI lacks asp_grid_create_mpi_f, and the build's
+  ! asperity_fortran library then supplies one that returns ASP_ERR_UNSUPPORTED.
+  interface asp_grid_create_mpi_f
+    function c_asp_grid_create_mpi_f(comm, nx, ny, lx, ly, out) &
+        bind(c, name='asp_grid_create_mpi_f')
+      import :: c_int, c_int64_t, c_double, c_ptr
+      integer(c_int), value :: comm                ! MPI_Fint
+      integer(c_int64_t), value :: nx, ny
+      real(c_double), value :: lx, ly
+      type(c_ptr), intent(out) :: out
+      integer(c_int) :: c_asp_grid_create_mpi_f
+    end function
+    module procedure grid_create_mpi_int
+  end interface
+  interface asp_grid_create_mpi
+    module procedure grid_create_mpi_int, grid_create_mpi_i64
   end interface
   interface asp_fft_export_wisdom
     function c_asp_fft_export_wisdom(path) bind(c, name='asp_fft_export_wisdom')
@@ -815,6 +848,31 @@ contains
     type(c_ptr), intent(out) :: out
     integer(c_int) :: status
     status = c_asp_grid_create_2d(int(nx, c_int64_t), int(ny, c_int64_t), lx, ly, out)
+  end function
+
+  ! A grid shared among the processes of comm (asperity_mpi.h): collective, every process
+  ! passing the same sizes and box. Each process then holds a slab of whole rows, which
+  ! asp_grid_get_slab gives (local_ny rows from row_offset on, 0-based): every array it passes
+  ! or receives for the grid is h(nx, local_ny), the counts local_pixels; scalar results are
+  ! those of the whole grid, the same on every process; a call that fails on one process
+  ! fails on all.
+  function grid_create_mpi_int(comm, nx, ny, lx, ly, out) result(status)
+    integer, intent(in) :: comm
+    integer(c_int), intent(in) :: nx, ny
+    real(c_double), intent(in) :: lx, ly
+    type(c_ptr), intent(out) :: out
+    integer(c_int) :: status
+    status = c_asp_grid_create_mpi_f(int(comm, c_int), int(nx, c_int64_t), &
+                                     int(ny, c_int64_t), lx, ly, out)
+  end function
+
+  function grid_create_mpi_i64(comm, nx, ny, lx, ly, out) result(status)
+    integer, intent(in) :: comm
+    integer(c_int64_t), intent(in) :: nx, ny
+    real(c_double), intent(in) :: lx, ly
+    type(c_ptr), intent(out) :: out
+    integer(c_int) :: status
+    status = c_asp_grid_create_mpi_f(int(comm, c_int), nx, ny, lx, ly, out)
   end function
 
   function fft_export_wisdom_text(path) result(status)

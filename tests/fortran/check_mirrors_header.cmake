@@ -1,27 +1,43 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-# Checks that the Fortran module mirrors the C header: every integer constant of the header
+# Checks that the Fortran module mirrors the C headers: every integer constant of the headers
 # (#define ASP_... and enumerators named ASP_...) is a public integer(c_int) parameter of the
 # module with the same value; every ASP_EXPORT function has a bind(c, name='...') interface,
 # and the C name is a public Fortran name that calls it: either that interface itself is named
 # like the C function, or it sits inside a generic interface block named like the C function;
-# and the module has no ASP_ constant, asp_ binding or asp_ generic interface that the header
-# lacks.
+# and the module has no ASP_ constant, asp_ binding or asp_ generic interface that the headers
+# lack.
 #
-#   cmake -DHEADER=include/asperity/asperity.h -DMODULE=bindings/fortran/asperity.f90
-#         [-DDROP=NAME[,NAME...]] -P check_mirrors_header.cmake
+# A function with an MPI_Comm parameter (asperity_mpi.h's asp_grid_create_mpi) is the one
+# exception: a C MPI_Comm is not a handle Fortran can hold, so it has no bind(c) interface.
+# The header has a twin taking MPI's Fortran handle (asp_grid_create_mpi_f), which is bound
+# like any other function; the C name must be a public generic interface of the module (its
+# procedures take the Fortran handle and call the twin).
+#
+#   cmake -DHEADER="include/asperity/asperity.h;include/asperity/asperity_mpi.h"
+#         -DMODULE=bindings/fortran/asperity.f90 [-DDROP=NAME[,NAME...]]
+#         -P check_mirrors_header.cmake
 #
 # DROP takes constants or functions out of the module text before the check, to show that the
 # check notices a missing entry (the test fortran.mirrors_header_notices_drift).
 cmake_minimum_required(VERSION 3.16)
 
-foreach(var HEADER MODULE)
-  if(NOT DEFINED ${var} OR NOT EXISTS "${${var}}")
-    message(FATAL_ERROR "pass -D${var}=<existing file> (got '${${var}}')")
+if(NOT DEFINED MODULE OR NOT EXISTS "${MODULE}")
+  message(FATAL_ERROR "pass -DMODULE=<existing file> (got '${MODULE}')")
+endif()
+if(NOT DEFINED HEADER OR HEADER STREQUAL "")
+  message(FATAL_ERROR "pass -DHEADER=<existing file>[;<existing file>...]")
+endif()
+set(header "")
+foreach(file IN LISTS HEADER)
+  if(NOT EXISTS "${file}")
+    message(FATAL_ERROR "pass -DHEADER=<existing file>[;<existing file>...] (got '${file}')")
   endif()
+  file(READ "${file}" text)
+  string(APPEND header "${text}\n")
 endforeach()
+string(REPLACE ";" ", " HEADER "${HEADER}")
 
-# ---- the C header ----------------------------------------------------------------------------
-file(READ "${HEADER}" header)
+# ---- the C headers ---------------------------------------------------------------------------
 # Block comments out, one at a time (CMake's regular expressions have no lazy match).
 while(TRUE)
   string(FIND "${header}" "/*" open)
@@ -114,12 +130,18 @@ foreach(enum IN LISTS enums)
   endforeach()
 endforeach()
 
-# Exported functions: the identifier right before the first '(' of each ASP_EXPORT declaration.
+# Exported functions: the identifier right before the first '(' of each ASP_EXPORT declaration;
+# those with an MPI_Comm parameter in c_comm_functions too.
 set(c_functions "")
-string(REGEX MATCHALL "ASP_EXPORT[^(@]*\\(" exports "${header}")
+set(c_comm_functions "")
+string(REGEX MATCHALL "ASP_EXPORT[^(@]*\\([^@]*" exports "${header}")
 foreach(declaration IN LISTS exports)
-  if(declaration MATCHES "([A-Za-z_][A-Za-z0-9_]*)[ \t\r\n]*\\($")
-    list(APPEND c_functions ${CMAKE_MATCH_1})
+  if(declaration MATCHES "([A-Za-z_][A-Za-z0-9_]*)[ \t\r\n]*\\((.*)$")
+    set(name "${CMAKE_MATCH_1}")
+    list(APPEND c_functions ${name})
+    if(CMAKE_MATCH_2 MATCHES "(^|[^A-Za-z0-9_])MPI_Comm([^A-Za-z0-9_]|$)")
+      list(APPEND c_comm_functions ${name})
+    endif()
   endif()
 endforeach()
 
@@ -136,6 +158,8 @@ string(REPLACE "," ";" drop "${DROP}")
 foreach(name IN LISTS drop)
   string(REGEX REPLACE "${name}[ \t]*=[ \t]*-?[0-9]+(_c_int)?" "" module "${module}")
   string(REGEX REPLACE "name[ \t]*=[ \t]*['\"]${name}['\"]" "name='dropped'" module "${module}")
+  string(REGEX REPLACE "interface[ \t]+${name}([ \t]*\n)" "interface dropped\\1" module
+         "${module}")
 endforeach()
 string(REPLACE ";" "@" module "${module}")
 # Comments out (a '!' after a quote on the same line is left alone: it may be in a string),
@@ -227,6 +251,19 @@ endforeach()
 
 foreach(function IN LISTS c_functions)
   string(TOLOWER "${function}" lower)
+  if(function IN_LIST c_comm_functions)
+    if(function IN_LIST f_bound)
+      string(APPEND problems "${function} takes a C MPI_Comm, which Fortran cannot pass, but "
+                             "the module binds it\n")
+    elseif(NOT lower IN_LIST f_generics)
+      string(APPEND problems "${function} (C MPI_Comm) has no generic interface ${lower} in "
+                             "the module taking MPI's Fortran handle\n")
+    elseif(NOT lower IN_LIST f_public)
+      string(APPEND problems "${function} has a generic interface in the module but is not "
+                             "public\n")
+    endif()
+    continue()
+  endif()
   if(NOT function IN_LIST f_bound)
     string(APPEND problems
       "${function} has no interface with bind(c, name='${function}') in the module\n")

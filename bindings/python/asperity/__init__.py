@@ -4,7 +4,9 @@
 A ctypes binding of the C library libasperity. The C header asperity.h is the manual; this
 package mirrors it:
 
-* :class:`Grid` -- ``Grid(nx, lx)`` (1D) or ``Grid(nx, ny, lx, ly)`` (2D);
+* :class:`Grid` -- ``Grid(nx, lx)`` (1D) or ``Grid(nx, ny, lx, ly)`` (2D); with MPI
+  (asperity_mpi.h), ``Grid.mpi(comm, nx, ny, lx, ly)`` shares a 2D grid among the processes
+  of an mpi4py communicator, each passing and receiving arrays of its own rows (``Grid.slab``);
 * :class:`System` -- ``System(grid, contact_modulus, substrate="periodic"|"free")``: the
   topography, the interaction and the state (fields ``pressure``, ``gap``, ...);
 * :class:`Solver` -- ``Solver("pk", tolerance=1e-10)``; ``solve(system, control, value)``
@@ -26,7 +28,8 @@ passed without a copy; results are (ny, nx) C-order arrays (``a[y, x]``); (nx,) 
 from . import _constants
 from . import _names
 from ._constants import *  # noqa: F401,F403 - every ASP_* constant of the headers
-from ._library import C_FUNCTIONS, FUNCTIONS, lib as _lib, library_path, last_error_message
+from ._library import (C_FUNCTIONS, FUNCTIONS, OPTIONAL_FUNCTIONS, lib as _lib, library_path,
+                       last_error_message)
 from .errors import *  # noqa: F401,F403
 from .errors import __all__ as _error_names
 from .grid import Grid, set_fft_planning
@@ -69,7 +72,7 @@ __all__ = (["Grid", "System", "Solver", "Report", "algorithms", "version", "abi_
             "status_string", "last_error_message", "set_fft_planning", "topography", "flat",
             "sphere", "paraboloid", "sinusoid", "double_sinewave", "self_affine", "statistics",
             "detrend", "power_spectrum", "export_wisdom", "import_wisdom", "C_FUNCTIONS",
-            "FUNCTIONS", "library_path", "CONTROLS", "FIELDS", "SCALARS", "HISTORY_COLUMNS",
+            "FUNCTIONS", "OPTIONAL_FUNCTIONS", "library_path", "CONTROLS", "FIELDS", "SCALARS", "HISTORY_COLUMNS",
             "TERMINATIONS", "DETREND_MODES", "FFT_PLANNINGS", "NORMALISATIONS"]
            + list(_error_names) + list(_constants.HEADER_CONSTANTS)
            + list(_names.NICE_CONSTANTS))

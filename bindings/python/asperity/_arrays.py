@@ -17,6 +17,10 @@ order or (ny, nx) in Fortran order when nx != ny (their memory is y fastest), st
 (``a[:, ::2]``), a flattened array of nx*ny values, other shapes. On a 1D grid the shape is
 ``(nx,)`` with a stride of 8 bytes.
 
+On a grid distributed over MPI (``Grid.mpi``) each process passes and receives its own rows
+only: ny above is then the process's row count, ``grid.local_ny`` (``Grid.slab``), for inputs
+and outputs alike.
+
 Alignment: the header says caller arrays need no alignment (the library copies them before
 any transform), so misaligned arrays are passed as they are. Read-only arrays are accepted
 wherever the library only reads; an array the library writes into must be writeable.
@@ -33,8 +37,9 @@ _F8 = np.dtype(np.float64)
 
 
 def field_shape(grid):
-    """The shape of the arrays the package returns for a field on ``grid``."""
-    return (grid.nx,) if grid.dimension == 1 else (grid.ny, grid.nx)
+    """The shape of the arrays the package returns for a field on ``grid`` (this process's
+    rows, (local_ny, nx), on a grid distributed over MPI)."""
+    return grid.shape
 
 
 def empty_field(grid):
@@ -43,7 +48,7 @@ def empty_field(grid):
 
 
 def copy_field(array, grid):
-    """A new (ny, nx) C-order copy of a field already checked by field_pointer."""
+    """A new C-order copy, of the field shape, of a field already checked by field_pointer."""
     return np.array(np.ravel(array, order="K").reshape(field_shape(grid)), dtype=_F8)
 
 
@@ -57,8 +62,10 @@ def _describe(array):
 def _expected(grid):
     if grid.dimension == 1:
         return "a float64 array of shape (nx,) = (%d,) with stride 8" % grid.nx
-    return ("a float64 array of shape (ny, nx) = (%d, %d) in C order or (nx, ny) = (%d, %d) in "
-            "Fortran order (x fastest, contiguous)" % (grid.ny, grid.nx, grid.nx, grid.ny))
+    rows = "ny" if grid.local_ny == grid.ny else "local_ny"
+    return ("a float64 array of shape (%s, nx) = (%d, %d) in C order or (nx, %s) = (%d, %d) in "
+            "Fortran order (x fastest, contiguous)"
+            % (rows, grid.local_ny, grid.nx, rows, grid.nx, grid.local_ny))
 
 
 def _layout_ok(array, grid):
@@ -68,7 +75,7 @@ def _layout_ok(array, grid):
             grid.nx == 1 or array.strides[0] == item)
     if array.ndim != 2:
         return False
-    nx, ny = grid.nx, grid.ny
+    nx, ny = grid.nx, grid.local_ny
     for x_axis, y_axis in ((1, 0), (0, 1)):  # (ny, nx) C order, then (nx, ny) Fortran order
         if array.shape[x_axis] != nx or array.shape[y_axis] != ny:
             continue
@@ -81,7 +88,7 @@ def _layout_ok(array, grid):
 def _shape_ok(array, grid):
     if grid.dimension == 1:
         return array.shape == (grid.nx,)
-    return array.shape in ((grid.ny, grid.nx), (grid.nx, grid.ny))
+    return array.shape in ((grid.local_ny, grid.nx), (grid.nx, grid.local_ny))
 
 
 def field_pointer(array, grid, argument, writeable=False):
@@ -100,8 +107,10 @@ def field_pointer(array, grid, argument, writeable=False):
     if not _shape_ok(array, grid):
         raise SizeMismatchError(
             _c.ASP_ERR_SIZE_MISMATCH,
-            "%s: %s does not fit the grid of %d x %d pixels; expected %s" % (
-                argument, _describe(array), grid.nx, grid.ny, _expected(grid)),
+            "%s: %s does not fit the grid of %d x %d pixels%s; expected %s" % (
+                argument, _describe(array), grid.nx, grid.ny,
+                "" if grid.local_ny == grid.ny else " (this process: %d rows)" % grid.local_ny,
+                _expected(grid)),
             "asperity (Python)")
     if not _layout_ok(array, grid):
         raise InvalidArgumentError(

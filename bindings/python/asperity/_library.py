@@ -14,7 +14,9 @@ When none loads, ``import asperity`` raises ImportError naming what was tried. A
 another ABI number is refused the same way.
 
 Every C function is declared once, in :data:`FUNCTIONS` (name -> (restype, argtypes)); the
-loaded library object :data:`lib` has exactly these functions bound with their types. The
+loaded library object :data:`lib` has exactly these functions bound with their types, but for
+the :data:`OPTIONAL_FUNCTIONS` a build may leave out (asperity_mpi.h's, in a build without
+MPI), which then raise UnsupportedError when called. The
 rest of the package calls them as ``lib.asp_...`` and checks statuses with :func:`check`.
 """
 import ctypes
@@ -25,8 +27,8 @@ import sys
 from . import _constants as _c
 from .errors import error_for_status
 
-__all__ = ["lib", "FUNCTIONS", "C_FUNCTIONS", "PROGRESS_FN", "POTENTIAL_FN", "check",
-           "read_string", "library_path"]
+__all__ = ["lib", "FUNCTIONS", "OPTIONAL_FUNCTIONS", "C_FUNCTIONS", "PROGRESS_FN",
+           "POTENTIAL_FN", "check", "read_string", "library_path"]
 
 _i64 = ctypes.c_int64
 _int = ctypes.c_int
@@ -114,10 +116,17 @@ FUNCTIONS = {
     "asp_solver_elapsed_seconds": (_int, [_ptr, _p_dbl]),
     "asp_solver_history_length": (_int, [_ptr, _p_i64]),
     "asp_solver_get_history": (_int, [_ptr, _int, _ptr, _i64]),
+    # asperity_mpi.h (asp_grid_create_mpi takes a C MPI_Comm, which Python cannot hold; an
+    # mpi4py communicator gives its Fortran handle, MPI_Fint, an int in Open MPI and MPICH)
+    "asp_grid_create_mpi_f": (_int, [_int, _i64, _i64, _dbl, _dbl, _p_ptr]),
 }
 
-#: The names of the C functions bound (the keys of FUNCTIONS).
-C_FUNCTIONS = frozenset(FUNCTIONS)
+#: The functions a library may lack, with what their absence means: they are bound when the
+#: library has them, and otherwise calling ``lib.<name>`` raises UnsupportedError saying why.
+OPTIONAL_FUNCTIONS = {
+    "asp_grid_create_mpi_f": "libasperity was built without MPI (no asperity_mpi.h): "
+                             "distributed grids need a build with MPI and libfftw3-mpi",
+}
 
 
 def _soname():
@@ -167,23 +176,39 @@ def _load():
                         "directory to LD_LIBRARY_PATH." % _c.ASP_ABI_VERSION)
 
 
+def _absent(name, reason):
+    """Stands in for an optional function the library lacks: raises UnsupportedError."""
+    def call(*args):
+        raise error_for_status(_c.ASP_ERR_UNSUPPORTED, "%s: %s" % (name, reason), name)
+    call.__name__ = name
+    return call
+
+
 def _bind(library):
-    missing = []
+    """Binds FUNCTIONS on the library; returns the names bound."""
+    missing, bound = [], set()
     for name, (restype, argtypes) in FUNCTIONS.items():
         try:
             function = getattr(library, name)
         except AttributeError:
-            missing.append(name)
+            if name in OPTIONAL_FUNCTIONS:
+                setattr(library, name, _absent(name, OPTIONAL_FUNCTIONS[name]))
+            else:
+                missing.append(name)
             continue
         function.restype = restype
         function.argtypes = argtypes
+        bound.add(name)
     if missing:
         raise ImportError("asperity: the library lacks %s (older than the header the package "
                           "was built from?)" % ", ".join(missing))
+    return frozenset(bound)
 
 
 lib, library_path = _load()
-_bind(lib)
+#: The names of the C functions bound from the library: the keys of FUNCTIONS but the
+#: OPTIONAL_FUNCTIONS it lacks.
+C_FUNCTIONS = _bind(lib)
 
 
 def last_error_message():

@@ -2,15 +2,18 @@
 """The Grid: a 1D or 2D periodic discretisation (asp_grid)."""
 import ctypes
 
+from . import _constants as _c
 from . import _names
 from ._handles import OwnedHandle
 from ._library import lib, check
+from .errors import InvalidArgumentError
 
 __all__ = ["Grid", "set_fft_planning"]
 
 
 class Grid(OwnedHandle):
-    """A periodic grid: ``Grid(nx, lx)`` in 1D, ``Grid(nx, ny, lx, ly)`` in 2D.
+    """A periodic grid: ``Grid(nx, lx)`` in 1D, ``Grid(nx, ny, lx, ly)`` in 2D, and
+    ``Grid.mpi(comm, nx, ny, lx, ly)`` shared among the processes of an mpi4py communicator.
 
     nx (and ny) pixels on a length lx (a box lx x ly); pixel i sits at x_i = i*lx/nx. A 1 x N
     strip is a valid 2D grid. ``fft_planning`` ("measure", the default, or "estimate") is
@@ -34,6 +37,10 @@ class Grid(OwnedHandle):
                                          ctypes.byref(handle)), "asp_grid_create_2d")
         else:
             raise TypeError("Grid(nx, lx) or Grid(nx, ny, lx, ly), got %d arguments" % len(args))
+        self._adopt(handle, fft_planning)
+
+    def _adopt(self, handle, fft_planning):
+        """Takes the new handle and reads the grid's shape, box and slab."""
         self._handle = handle.value
         dimension, nx, ny, n = ctypes.c_int(), ctypes.c_int64(), ctypes.c_int64(), ctypes.c_int64()
         check(lib.asp_grid_get_shape(self._handle, ctypes.byref(dimension), ctypes.byref(nx),
@@ -43,8 +50,42 @@ class Grid(OwnedHandle):
               "asp_grid_get_box")
         self._dimension, self._nx, self._ny, self._n = dimension.value, nx.value, ny.value, n.value
         self._lx, self._ly = lx.value, ly.value
+        rows, offset, local = ctypes.c_int64(), ctypes.c_int64(), ctypes.c_int64()
+        check(lib.asp_grid_get_slab(self._handle, ctypes.byref(rows), ctypes.byref(offset),
+                                    ctypes.byref(local)), "asp_grid_get_slab")
+        self._local_ny, self._row_offset, self._local_n = rows.value, offset.value, local.value
         if fft_planning is not None:
             self.set_fft_planning(fft_planning)
+
+    @classmethod
+    def mpi(cls, comm, nx, ny, lx, ly, fft_planning=None):
+        """A 2D grid of nx x ny pixels on lx x ly shared among the processes of ``comm``.
+
+        ``comm`` is an mpi4py communicator (``mpi4py.MPI.COMM_WORLD``, ...); its Fortran handle
+        (``comm.py2f()``) goes to asp_grid_create_mpi_f, so this package never imports mpi4py
+        itself. Collective, as is every later call on the grid and on the systems and solvers
+        made on it: every process makes the same calls in the same order, with the same
+        scalars. Each process holds a slab of whole rows, :attr:`slab`; every array passed for
+        the grid or returned for it has shape ``(local_ny, nx)`` (:attr:`shape`), while sizes
+        and scalar results (means, forces, statistics, reports) are the whole grid's, the same
+        on every process. A call that fails on one process raises the same error on all.
+
+        Raises UnsupportedError when libasperity was built without MPI.
+        """
+        try:
+            handle_f = comm.py2f()
+        except AttributeError:
+            raise InvalidArgumentError(
+                _c.ASP_ERR_INVALID_ARGUMENT,
+                "comm: expected an mpi4py communicator (with py2f()), got %s"
+                % type(comm).__name__, "Grid.mpi") from None
+        handle = ctypes.c_void_p()
+        check(lib.asp_grid_create_mpi_f(int(handle_f), int(nx), int(ny), float(lx), float(ly),
+                                        ctypes.byref(handle)), "asp_grid_create_mpi_f")
+        grid = cls.__new__(cls)
+        grid._distributed = True
+        grid._adopt(handle, fft_planning)
+        return grid
 
     @classmethod
     def one_d(cls, nx, lx, **kwargs):
@@ -58,6 +99,7 @@ class Grid(OwnedHandle):
 
     _destroy = lib.asp_grid_destroy
     _what = "grid"
+    _distributed = False
 
     # -- shape (read once at creation: a grid is immutable) --------------------------------
     @property
@@ -92,8 +134,20 @@ class Grid(OwnedHandle):
 
     @property
     def shape(self):
-        """The shape of the field arrays the package returns: (ny, nx), or (nx,) in 1D."""
-        return (self._nx,) if self._dimension == 1 else (self._ny, self._nx)
+        """The shape of the field arrays the package takes and returns: (ny, nx), or (nx,) in
+        1D; (local_ny, nx) on a grid distributed over MPI (see :attr:`slab`)."""
+        return (self._nx,) if self._dimension == 1 else (self._local_ny, self._nx)
+
+    @property
+    def local_ny(self):
+        """This process's rows: ny unless the grid is distributed over MPI."""
+        return self._local_ny
+
+    @property
+    def local_pixels(self):
+        """The values in every array passed for the grid: nx*local_ny (n_pixels unless the
+        grid is distributed over MPI)."""
+        return self._local_n
 
     @property
     def box(self):
@@ -101,12 +155,13 @@ class Grid(OwnedHandle):
         return (self._lx, self._ly)
 
     def coordinates(self):
-        """The pixel positions: x of shape (nx,) in 1D; (x, y) of the field shape in 2D."""
+        """The pixel positions: x of shape (nx,) in 1D; (x, y) of the field shape in 2D (this
+        process's rows on a distributed grid)."""
         import numpy as np
         x = np.arange(self._nx) * (self._lx / self._nx)
         if self._dimension == 1:
             return x
-        y = np.arange(self._ny) * (self._ly / self._ny)
+        y = np.arange(self._row_offset, self._row_offset + self._local_ny) * (self._ly / self._ny)
         xx, yy = np.meshgrid(x, y)  # (ny, nx)
         return xx, yy
 
@@ -141,14 +196,16 @@ class Grid(OwnedHandle):
         """This process's rows of the grid, ``(local_ny, row_offset)`` (asp_grid_get_slab).
 
         Every array passed for the grid, or returned for it, holds these rows, shape
-        ``(local_ny, nx)``. The whole grid, ``(ny, 0)``, unless it is distributed over MPI.
+        ``(local_ny, nx)``. The whole grid, ``(ny, 0)``, unless it is distributed over MPI
+        (:meth:`mpi`); a process may hold no rows (local_ny 0) when there are fewer rows than
+        processes.
         """
-        rows, offset = ctypes.c_int64(0), ctypes.c_int64(0)
-        check(lib.asp_grid_get_slab(self.handle, ctypes.byref(rows), ctypes.byref(offset), None),
-              "asp_grid_get_slab")
-        return rows.value, offset.value
+        self.handle  # noqa: B018 - a closed grid raises, as when this asked the library
+        return self._local_ny, self._row_offset
 
     def __repr__(self):
+        if self._distributed:
+            return "Grid.mpi(<comm>, %d, %d, %r, %r)" % (self._nx, self._ny, self._lx, self._ly)
         if self._dimension == 1:
             return "Grid(%d, %r)" % (self._nx, self._lx)
         return "Grid(%d, %d, %r, %r)" % (self._nx, self._ny, self._lx, self._ly)

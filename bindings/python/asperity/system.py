@@ -23,7 +23,8 @@ class System(OwnedHandle):
     with a flat topography, zero pressure and the plain hard wall. It holds a reference to
     its Grid (and the library keeps the C grid alive too).
 
-    Fields (new NumPy arrays of shape (ny, nx) in C order, (nx,) in 1D): :attr:`pressure`,
+    Fields (new NumPy arrays of shape (ny, nx) in C order, (nx,) in 1D, (local_ny, nx) on a
+    grid distributed over MPI, whose arrays are the process's rows): :attr:`pressure`,
     :attr:`gap`, :attr:`displacement`, :attr:`topography` (settable from an array), or
     :meth:`get_field` with an optional ``out`` array.
     Scalars: :meth:`get` by name ("mean_pressure", "contact_fraction", ...; see
@@ -82,7 +83,7 @@ class System(OwnedHandle):
     def set_topography(self, heights):
         """Copies the heights (an array of the layout rules) and resets the state."""
         self._call("asp_system_set_topography", field_pointer(heights, self._grid, "heights"),
-                   self._grid.n_pixels)
+                   self._grid.local_pixels)
 
     def set_k0(self, k0):
         """The stiffness K~(0) > 0 of the mean mode (UnsupportedError on a free system)."""
@@ -114,7 +115,7 @@ class System(OwnedHandle):
         """A Python potential: ``fn(gap) -> (phi, dphi, d2phi or None)`` on NumPy arrays.
 
         ``gap`` is a read-only float64 array of the n = nx*ny gaps (flat, x fastest, in the
-        system's units); fn returns phi, phi' and phi'' at each (arrays of n values or
+        system's units; on a distributed grid, the n = nx*local_ny of the process's rows); fn returns phi, phi' and phi'' at each (arrays of n values or
         scalars); d2phi may be None when the solver does not ask for it (it is asked for only
         by some solvers). ``hard_wall=False``: a soft wall (the unconstrained solvers);
         True: the hard wall g >= 0 with the potential on the open gap ("lbfgsb" on the gap).
@@ -172,7 +173,7 @@ class System(OwnedHandle):
         if out is None:
             out = empty_field(self._grid)
         pointer = field_pointer(out, self._grid, "out", writeable=True)
-        self._call("asp_system_get_field", code, pointer, self._grid.n_pixels)
+        self._call("asp_system_get_field", code, pointer, self._grid.local_pixels)
         return out
 
     @property

@@ -4,7 +4,9 @@
 Generators return a new array of the grid's field shape, ``(ny, nx)`` in C order (``(nx,)``
 in 1D), so that ``h[y, x]`` is the height at x_i, y_j. Functions that read heights accept the
 layouts of the package's rules (see ``asperity._arrays``): ``(ny, nx)`` C order or
-``(nx, ny)`` Fortran order, float64, without a copy.
+``(nx, ny)`` Fortran order, float64, without a copy. On a grid distributed over MPI
+(``Grid.mpi``), ny is the process's rows, ``grid.local_ny``: each process generates and passes
+its own rows, and statistics and spectra are those of the whole surface.
 """
 import collections
 import ctypes
@@ -23,7 +25,7 @@ __all__ = ["flat", "sphere", "paraboloid", "sinusoid", "double_sinewave", "self_
 
 def _generate(function, grid, *args):
     heights = empty_field(grid)
-    check(getattr(lib, function)(grid.handle, *args, heights.ctypes.data, grid.n_pixels),
+    check(getattr(lib, function)(grid.handle, *args, heights.ctypes.data, grid.local_pixels),
           function)
     return heights
 
@@ -83,7 +85,7 @@ def statistics(grid, heights, rms_height=True, rms_slope=True, rms_curvature=Tru
     values = [ctypes.c_double() for _ in range(3)]
     wanted = (rms_height, rms_slope, rms_curvature)
     args = [ctypes.byref(v) if w else None for v, w in zip(values, wanted)]
-    check(lib.asp_topography_statistics(grid.handle, pointer, grid.n_pixels, *args),
+    check(lib.asp_topography_statistics(grid.handle, pointer, grid.local_pixels, *args),
           "asp_topography_statistics")
     return Statistics(*(v.value if w else None for v, w in zip(values, wanted)))
 
@@ -99,7 +101,7 @@ def detrend(grid, heights, mode="plane", inplace=False):
         field_pointer(heights, grid, "heights")
         heights = copy_field(heights, grid)
     pointer = field_pointer(heights, grid, "heights", writeable=True)
-    check(lib.asp_topography_detrend(grid.handle, code, pointer, grid.n_pixels),
+    check(lib.asp_topography_detrend(grid.handle, code, pointer, grid.local_pixels),
           "asp_topography_detrend")
     return heights
 
@@ -110,7 +112,7 @@ def power_spectrum(grid, heights, n_bins):
     n_bins = int(n_bins)
     q = np.zeros(max(n_bins, 0))
     c = np.zeros(max(n_bins, 0))
-    check(lib.asp_topography_power_spectrum(grid.handle, pointer, grid.n_pixels, n_bins,
+    check(lib.asp_topography_power_spectrum(grid.handle, pointer, grid.local_pixels, n_bins,
                                             q.ctypes.data, c.ctypes.data),
           "asp_topography_power_spectrum")
     return q, c
