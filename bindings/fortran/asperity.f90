@@ -446,8 +446,8 @@ module asperity
   ! module's asp_grid_create_mpi takes the communicator as MPI's Fortran bindings hold it (a
   ! default integer: the handle of the mpi module, or comm%MPI_VAL of mpi_f08) and calls
   ! asp_grid_create_mpi_f, which converts it in C. Only declared here, so the module compiles
-  ! without MPI; a libasperity built without MPI lacks asp_grid_create_mpi_f, and the build's
-  ! asperity_fortran library then supplies one that returns ASP_ERR_UNSUPPORTED.
+  ! without MPI; a libasperity built without MPI exports asp_grid_create_mpi_f too, returning
+  ! ASP_ERR_UNSUPPORTED with the reason, so programs using the module link either way.
   interface asp_grid_create_mpi_f
     function c_asp_grid_create_mpi_f(comm, nx, ny, lx, ly, out) &
         bind(c, name='asp_grid_create_mpi_f')

@@ -171,10 +171,36 @@ void HalfComplexFft::backward(double *coefficients, double *real) const {
   fftw_execute_r2r(static_cast<fftw_plan>(hc2r_), coefficients, real);
 }
 
+namespace {
+// The process's FFTW wisdom, set aside while it lives (under the planner lock) and put back
+// afterwards. FFTW lets the wisdom of more rigorous planning (the grids' FFTW_MEASURE plans)
+// choose the algorithm of an FFTW_ESTIMATE plan of the same transform, and another algorithm
+// rounds differently: plans that must not depend on what the process planned before are made
+// without it.
+class WithoutWisdom {
+ public:
+  WithoutWisdom() : saved_(fftw_export_wisdom_to_string()) { fftw_forget_wisdom(); }
+  ~WithoutWisdom() {
+    fftw_forget_wisdom();
+    if (saved_ != nullptr) {
+      fftw_import_wisdom_from_string(saved_);
+      fftw_free(saved_);
+    }
+  }
+  WithoutWisdom(const WithoutWisdom &) = delete;
+  WithoutWisdom &operator=(const WithoutWisdom &) = delete;
+
+ private:
+  char *saved_;
+};
+}  // namespace
+
 LineFft::LineFft(std::int64_t n) {
   Spectrum line(static_cast<std::size_t>(n));
   auto *c = reinterpret_cast<fftw_complex *>(line.data());
   std::lock_guard<std::mutex> lock(fft_planner::mutex());
+  fft_planner::threads_ready();  // so that the wisdom of threaded plans is read back
+  const WithoutWisdom own_choice;
   const fft_planner::PlannerThreads one_thread(1, 0);
   plan_ = fftw_plan_dft_1d(static_cast<int>(n), c, c, FFTW_BACKWARD, FFTW_ESTIMATE);
   if (plan_ == nullptr) throw Error(Status::fft, "FFTW could not plan a transform of this length");
@@ -194,6 +220,8 @@ RealLineFft::RealLineFft(std::int64_t n) {
   Spectrum half(static_cast<std::size_t>(n / 2 + 1));
   Field real(static_cast<std::size_t>(n));
   std::lock_guard<std::mutex> lock(fft_planner::mutex());
+  fft_planner::threads_ready();
+  const WithoutWisdom own_choice;
   const fft_planner::PlannerThreads one_thread(1, 0);
   plan_ = fftw_plan_dft_c2r_1d(static_cast<int>(n), reinterpret_cast<fftw_complex *>(half.data()),
                                real.data(), FFTW_ESTIMATE | FFTW_DESTROY_INPUT);

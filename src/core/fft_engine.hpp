@@ -90,8 +90,9 @@ class HalfComplexFft {
 };
 
 // One-dimensional backward transforms along one axis at a time, complex in place (LineFft)
-// and half-complex to real (RealLineFft), planned with FFTW_ESTIMATE: the plan, and so the
-// rounding, depends only on the length, the same on every process and in every run. Arrays
+// and half-complex to real (RealLineFft), planned with FFTW_ESTIMATE and without the
+// process's wisdom: the plan, and so the rounding, depends only on the length, the same on
+// every process, in every run and whatever was planned before. Arrays
 // come from the library's allocator. Unnormalised, as all transforms here.
 class LineFft {
  public:

@@ -123,6 +123,8 @@ FUNCTIONS = {
 
 #: The functions a library may lack, with what their absence means: they are bound when the
 #: library has them, and otherwise calling ``lib.<name>`` raises UnsupportedError saying why.
+#: (A library built without MPI exports asp_grid_create_mpi_f and refuses there itself; one
+#: older than distributed grids lacks it.)
 OPTIONAL_FUNCTIONS = {
     "asp_grid_create_mpi_f": "libasperity was built without MPI (no asperity_mpi.h): "
                              "distributed grids need a build with MPI and libfftw3-mpi",
