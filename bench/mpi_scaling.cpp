@@ -66,11 +66,11 @@ double fft_pair_seconds(const asp::Grid &grid) {
   double best = 1e300;
   for (int batch = 0; batch < 5; ++batch)
     best = std::min(best, timed([&] {
-                      for (int k = 0; k < repeats; ++k) {
-                        fft.forward(f.data(), s.data());
-                        fft.backward(s.data(), f.data());
-                      }
-                    }) / repeats);
+                            for (int k = 0; k < repeats; ++k) {
+                              fft.forward(f.data(), s.data());
+                              fft.backward(s.data(), f.data());
+                            }
+                          }) / repeats);
   return best;
 }
 
@@ -109,7 +109,8 @@ void run(const char *algorithm, std::int64_t n, int iterations) {
   const double seconds = timed([&] { solver.solve(system, control, value); });
   const double per_iteration = seconds / static_cast<double>(solver.report().iterations);
   const double pair = fft_pair_seconds(*grid);
-  double memory = peak_memory() / static_cast<double>(std::max<std::int64_t>(1, grid->local_pixels()));
+  double memory =
+      peak_memory() / static_cast<double>(std::max<std::int64_t>(1, grid->local_pixels()));
   MPI_Allreduce(MPI_IN_PLACE, &memory, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
   if (rank == 0)
     std::printf("%-14s %6lld %9d %12.2f %10.2f %10.2f %14.0f\n", algorithm,
@@ -130,9 +131,12 @@ int main(int argc, char **argv) {
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     const bool has_value = i + 1 < argc;
-    if (arg == "--size" && has_value) sizes.push_back(std::atoll(argv[++i]));
-    else if (arg == "--iterations" && has_value) iterations = std::atoi(argv[++i]);
-    else if (arg == "--solver" && has_value) solvers.push_back(argv[++i]);
+    if (arg == "--size" && has_value)
+      sizes.push_back(std::atoll(argv[++i]));
+    else if (arg == "--iterations" && has_value)
+      iterations = std::atoi(argv[++i]);
+    else if (arg == "--solver" && has_value)
+      solvers.push_back(argv[++i]);
     else {
       if (rank == 0)
         std::fprintf(stderr, "usage: %s [--size N]... [--iterations K] [--solver NAME]...\n",

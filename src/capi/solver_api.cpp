@@ -8,6 +8,7 @@
 #include "capi/text.hpp"
 #include "core/checks.hpp"
 
+using asp::capi::Agreement;
 using asp::capi::guarded;
 using asp::capi::guarded_on;
 
@@ -121,9 +122,8 @@ int asp_solver_set_max_iterations(asp_solver *solver, int64_t max_iterations) {
     // Counts beyond 2^53 are not distinguishable as doubles; the option's range caps them.
     // Counts beyond the option's range (9.2e18) are no limit in practice: they mean the largest.
     const int64_t largest = 9200000000000000000;
-    solver->solver->set_option("max_iterations",
-                               static_cast<double>(max_iterations > largest ? largest
-                                                                            : max_iterations));
+    solver->solver->set_option(
+        "max_iterations", static_cast<double>(max_iterations > largest ? largest : max_iterations));
   });
 }
 
@@ -143,7 +143,7 @@ int asp_solver_set_history(asp_solver *solver, int on) {
 
 int asp_solver_solve(asp_solver *solver, asp_system *system, int control, double value) {
   const asp::Grid *grid = system != nullptr ? &system->system->grid() : nullptr;
-  return guarded_on("asp_solver_solve", grid, [&](asp::capi::Agreement &agreement) {
+  return guarded_on("asp_solver_solve", grid, [&](Agreement &agreement) {
     asp::require_not_null(solver, "solver");
     solver->solver->forget_last_solve();
     asp::require_not_null(system, "system");
@@ -225,9 +225,9 @@ int asp_solver_get_history(const asp_solver *solver, int column, double *values,
     const asp::History &history = solver->solver->history();
     const auto rows = static_cast<int64_t>(history.size());
     if (n != rows)
-      throw asp::Error(asp::Status::size_mismatch,
-                       "array 'values' has count " + std::to_string(n) +
-                           " but the history has " + std::to_string(rows) + " rows");
+      throw asp::Error(asp::Status::size_mismatch, "array 'values' has count " + std::to_string(n) +
+                                                       " but the history has " +
+                                                       std::to_string(rows) + " rows");
     if (rows > 0) asp::require_not_null(values, "values");
     static_assert(ASP_HISTORY_CONTACT_FRACTION - ASP_HISTORY_ITERATION ==
                       static_cast<int>(asp::HistoryColumn::contact_fraction),

@@ -9,6 +9,7 @@
 #include "capi/handles.hpp"
 #include "core/checks.hpp"
 
+using asp::capi::Agreement;
 using asp::capi::guarded;
 using asp::capi::guarded_on;
 
@@ -16,14 +17,16 @@ namespace {
 const asp::Grid *grid_of(const asp_system *system) {
   return system != nullptr ? &system->system->grid() : nullptr;
 }
-const asp::Grid *grid_of(const asp_grid *grid) { return grid != nullptr ? grid->grid.get() : nullptr; }
+const asp::Grid *grid_of(const asp_grid *grid) {
+  return grid != nullptr ? grid->grid.get() : nullptr;
+}
 }  // namespace
 
 extern "C" {
 
 int asp_system_create(const asp_grid *grid, double contact_modulus, asp_system **out) {
   if (out != nullptr) *out = nullptr;
-  return guarded_on("asp_system_create", grid_of(grid), [&](asp::capi::Agreement &agreement) {
+  return guarded_on("asp_system_create", grid_of(grid), [&](Agreement &agreement) {
     asp::require_not_null(grid, "grid");
     asp::require_not_null(out, "out");
     agreement.checks_passed();
@@ -35,13 +38,12 @@ int asp_system_create(const asp_grid *grid, double contact_modulus, asp_system *
 
 int asp_system_create_free(const asp_grid *grid, double contact_modulus, asp_system **out) {
   if (out != nullptr) *out = nullptr;
-  return guarded_on("asp_system_create_free", grid_of(grid), [&](asp::capi::Agreement &agreement) {
+  return guarded_on("asp_system_create_free", grid_of(grid), [&](Agreement &agreement) {
     asp::require_not_null(grid, "grid");
     asp::require_not_null(out, "out");
     agreement.checks_passed();
     std::unique_ptr<asp_system> handle(new asp_system);
-    handle->system.reset(
-        new asp::System(grid->grid, contact_modulus, asp::SubstrateKind::free));
+    handle->system.reset(new asp::System(grid->grid, contact_modulus, asp::SubstrateKind::free));
     *out = handle.release();
   });
 }
@@ -49,7 +51,7 @@ int asp_system_create_free(const asp_grid *grid, double contact_modulus, asp_sys
 void asp_system_destroy(asp_system *system) { delete system; }
 
 int asp_system_set_topography(asp_system *system, const double *heights, int64_t n) {
-  return guarded_on("asp_system_set_topography", grid_of(system), [&](asp::capi::Agreement &agreement) {
+  return guarded_on("asp_system_set_topography", grid_of(system), [&](Agreement &agreement) {
     asp::require_not_null(system, "system");
     asp::require_array(heights, n, system->system->grid().local_pixels(), "heights");
     asp::require_finite_array(heights, n, "heights");
@@ -59,14 +61,14 @@ int asp_system_set_topography(asp_system *system, const double *heights, int64_t
 }
 
 int asp_system_set_k0(asp_system *system, double k0) {
-  return guarded_on("asp_system_set_k0", grid_of(system), [&](asp::capi::Agreement &) {
+  return guarded_on("asp_system_set_k0", grid_of(system), [&](Agreement &) {
     asp::require_not_null(system, "system");
     system->system->set_k0(k0);
   });
 }
 
 int asp_system_set_adhesion(asp_system *system, double work_of_adhesion, double range) {
-  return guarded_on("asp_system_set_adhesion", grid_of(system), [&](asp::capi::Agreement &) {
+  return guarded_on("asp_system_set_adhesion", grid_of(system), [&](Agreement &) {
     asp::require_not_null(system, "system");
     system->system->set_adhesion(work_of_adhesion, range);
   });
@@ -74,7 +76,7 @@ int asp_system_set_adhesion(asp_system *system, double work_of_adhesion, double 
 
 int asp_system_set_soft_wall(asp_system *system, double gamma_r, double rho_r, double gamma_a,
                              double rho_a) {
-  return guarded_on("asp_system_set_soft_wall", grid_of(system), [&](asp::capi::Agreement &) {
+  return guarded_on("asp_system_set_soft_wall", grid_of(system), [&](Agreement &) {
     asp::require_not_null(system, "system");
     system->system->set_soft_wall(gamma_r, rho_r, gamma_a, rho_a);
   });
@@ -82,14 +84,14 @@ int asp_system_set_soft_wall(asp_system *system, double gamma_r, double rho_r, d
 
 int asp_system_set_lennard_jones(asp_system *system, double work_of_adhesion,
                                  double equilibrium_distance) {
-  return guarded_on("asp_system_set_lennard_jones", grid_of(system), [&](asp::capi::Agreement &) {
+  return guarded_on("asp_system_set_lennard_jones", grid_of(system), [&](Agreement &) {
     asp::require_not_null(system, "system");
     system->system->set_lennard_jones(work_of_adhesion, equilibrium_distance);
   });
 }
 
 int asp_system_set_hard_wall(asp_system *system) {
-  return guarded_on("asp_system_set_hard_wall", grid_of(system), [&](asp::capi::Agreement &) {
+  return guarded_on("asp_system_set_hard_wall", grid_of(system), [&](Agreement &) {
     asp::require_not_null(system, "system");
     system->system->set_hard_wall();
   });
@@ -101,14 +103,14 @@ static_assert(std::is_same<asp_potential_fn, asp::PotentialFunction>::value,
 
 int asp_system_set_potential(asp_system *system, asp_potential_fn fn, void *user_data,
                              int hard_wall) {
-  return guarded_on("asp_system_set_potential", grid_of(system), [&](asp::capi::Agreement &) {
+  return guarded_on("asp_system_set_potential", grid_of(system), [&](Agreement &) {
     asp::require_not_null(system, "system");
     system->system->set_user_potential(fn, user_data, hard_wall != 0);
   });
 }
 
 int asp_system_set_reference_pressure(asp_system *system, double reference_pressure) {
-  return guarded_on("asp_system_set_reference_pressure", grid_of(system), [&](asp::capi::Agreement &) {
+  return guarded_on("asp_system_set_reference_pressure", grid_of(system), [&](Agreement &) {
     asp::require_not_null(system, "system");
     asp::require_non_negative(reference_pressure, "reference_pressure");
     system->system->set_reference_pressure(reference_pressure);
@@ -116,14 +118,14 @@ int asp_system_set_reference_pressure(asp_system *system, double reference_press
 }
 
 int asp_system_reset(asp_system *system) {
-  return guarded_on("asp_system_reset", grid_of(system), [&](asp::capi::Agreement &) {
+  return guarded_on("asp_system_reset", grid_of(system), [&](Agreement &) {
     asp::require_not_null(system, "system");
     system->system->reset_state();
   });
 }
 
 int asp_system_get(const asp_system *system, int key, double *value) {
-  return guarded_on("asp_system_get", grid_of(system), [&](asp::capi::Agreement &agreement) {
+  return guarded_on("asp_system_get", grid_of(system), [&](Agreement &agreement) {
     asp::require_not_null(system, "system");
     asp::require_not_null(value, "value");
     asp::capi::require_member(key, asp::capi::Family::scalar_key, "key");
@@ -153,8 +155,7 @@ int asp_system_get(const asp_system *system, int key, double *value) {
       case ASP_INTERACTION_ENERGY: result = s.interaction_energy(); break;
       case ASP_WORK_OF_ADHESION: result = adhesion != nullptr ? adhesion->work() : 0.0; break;
       case ASP_ADHESION_RANGE: result = adhesion != nullptr ? adhesion->range() : 0.0; break;
-      default:
-        throw asp::Error(asp::Status::internal, "scalar key without a getter");
+      default: throw asp::Error(asp::Status::internal, "scalar key without a getter");
     }
     if (!std::isfinite(result))
       throw asp::Error(asp::Status::invalid_argument,
@@ -165,7 +166,7 @@ int asp_system_get(const asp_system *system, int key, double *value) {
 }
 
 int asp_system_get_field(const asp_system *system, int field, double *values, int64_t n) {
-  return guarded_on("asp_system_get_field", grid_of(system), [&](asp::capi::Agreement &agreement) {
+  return guarded_on("asp_system_get_field", grid_of(system), [&](Agreement &agreement) {
     asp::require_not_null(system, "system");
     const asp::System &s = *system->system;
     asp::capi::require_member(field, asp::capi::Family::field, "field");
@@ -177,8 +178,7 @@ int asp_system_get_field(const asp_system *system, int field, double *values, in
       case ASP_FIELD_GAP: source = &s.state().gap; break;
       case ASP_FIELD_TOPOGRAPHY: source = &s.heights(); break;
       case ASP_FIELD_DISPLACEMENT: s.displacement(values); return;
-      default:
-        throw asp::Error(asp::Status::internal, "field without a getter");
+      default: throw asp::Error(asp::Status::internal, "field without a getter");
     }
     std::copy(source->begin(), source->end(), values);
   });

@@ -8,10 +8,13 @@
 #include "physics/surface_statistics.hpp"
 #include "physics/topography.hpp"
 
+using asp::capi::Agreement;
 using asp::capi::guarded_on;
 
 namespace {
-const asp::Grid *grid_of(const asp_grid *grid) { return grid != nullptr ? grid->grid.get() : nullptr; }
+const asp::Grid *grid_of(const asp_grid *grid) {
+  return grid != nullptr ? grid->grid.get() : nullptr;
+}
 
 // The grid of an array of n heights (this process's rows), after checking both.
 const asp::Grid &grid_for(const asp_grid *grid, const void *heights, int64_t n) {
@@ -24,7 +27,7 @@ const asp::Grid &grid_for(const asp_grid *grid, const void *heights, int64_t n) 
 extern "C" {
 
 int asp_topography_detrend(const asp_grid *grid, int mode, double *heights, int64_t n) {
-  return guarded_on("asp_topography_detrend", grid_of(grid), [&](asp::capi::Agreement &agreement) {
+  return guarded_on("asp_topography_detrend", grid_of(grid), [&](Agreement &agreement) {
     const asp::Grid &g = grid_for(grid, heights, n);
     asp::capi::require_member(mode, asp::capi::Family::detrend, "mode");
     const asp::Detrend detrend = mode == ASP_DETREND_MEAN    ? asp::Detrend::mean
@@ -37,43 +40,42 @@ int asp_topography_detrend(const asp_grid *grid, int mode, double *heights, int6
 }
 
 int asp_topography_flat(const asp_grid *grid, double *heights, int64_t n) {
-  return guarded_on("asp_topography_flat", grid_of(grid), [&](asp::capi::Agreement &) { asp::flat_topography(grid_for(grid, heights, n), heights); });
+  return guarded_on("asp_topography_flat", grid_of(grid), [&](Agreement &) {
+    asp::flat_topography(grid_for(grid, heights, n), heights);
+  });
 }
 
 int asp_topography_sphere(const asp_grid *grid, double radius, double *heights, int64_t n) {
-  return guarded_on("asp_topography_sphere", grid_of(grid), [&](asp::capi::Agreement &) {
+  return guarded_on("asp_topography_sphere", grid_of(grid), [&](Agreement &) {
     asp::sphere_topography(grid_for(grid, heights, n), radius, heights);
   });
 }
 
-int asp_topography_paraboloid(const asp_grid *grid, double radius, double *heights,
-                              int64_t n) {
-  return guarded_on("asp_topography_paraboloid", grid_of(grid), [&](asp::capi::Agreement &) {
+int asp_topography_paraboloid(const asp_grid *grid, double radius, double *heights, int64_t n) {
+  return guarded_on("asp_topography_paraboloid", grid_of(grid), [&](Agreement &) {
     asp::paraboloid_topography(grid_for(grid, heights, n), radius, heights);
   });
 }
 
 int asp_topography_sinusoid(const asp_grid *grid, double amplitude, int64_t periods_x,
                             int64_t periods_y, double *heights, int64_t n) {
-  return guarded_on("asp_topography_sinusoid", grid_of(grid), [&](asp::capi::Agreement &) {
-    asp::sinusoid_topography(grid_for(grid, heights, n), amplitude, periods_x, periods_y,
-                             heights);
+  return guarded_on("asp_topography_sinusoid", grid_of(grid), [&](Agreement &) {
+    asp::sinusoid_topography(grid_for(grid, heights, n), amplitude, periods_x, periods_y, heights);
   });
 }
 
-int asp_topography_double_sinewave(const asp_grid *grid, double amplitude,
-                                   double ripple_amplitude, int64_t ripple_periods,
-                                   double *heights, int64_t n) {
-  return guarded_on("asp_topography_double_sinewave", grid_of(grid), [&](asp::capi::Agreement &) {
+int asp_topography_double_sinewave(const asp_grid *grid, double amplitude, double ripple_amplitude,
+                                   int64_t ripple_periods, double *heights, int64_t n) {
+  return guarded_on("asp_topography_double_sinewave", grid_of(grid), [&](Agreement &) {
     asp::double_sinewave_topography(grid_for(grid, heights, n), amplitude, ripple_amplitude,
                                     ripple_periods, heights);
   });
 }
 
 int asp_topography_self_affine(const asp_grid *grid, double hurst, double long_cutoff,
-                               double rolloff, double short_cutoff, int normalise,
-                               double target, int64_t seed, double *heights, int64_t n) {
-  return guarded_on("asp_topography_self_affine", grid_of(grid), [&](asp::capi::Agreement &agreement) {
+                               double rolloff, double short_cutoff, int normalise, double target,
+                               int64_t seed, double *heights, int64_t n) {
+  return guarded_on("asp_topography_self_affine", grid_of(grid), [&](Agreement &agreement) {
     const asp::Grid &g = grid_for(grid, heights, n);
     asp::capi::require_member(normalise, asp::capi::Family::normalisation, "normalise");
     asp::SelfAffineParameters p;
@@ -92,7 +94,7 @@ int asp_topography_self_affine(const asp_grid *grid, double hurst, double long_c
 
 int asp_topography_statistics(const asp_grid *grid, const double *heights, int64_t n,
                               double *rms_height, double *rms_slope, double *rms_curvature) {
-  return guarded_on("asp_topography_statistics", grid_of(grid), [&](asp::capi::Agreement &agreement) {
+  return guarded_on("asp_topography_statistics", grid_of(grid), [&](Agreement &agreement) {
     const asp::Grid &g = grid_for(grid, heights, n);
     asp::require_finite_array(heights, n, "heights");
     agreement.checks_passed();
@@ -102,7 +104,7 @@ int asp_topography_statistics(const asp_grid *grid, const double *heights, int64
 
 int asp_topography_power_spectrum(const asp_grid *grid, const double *heights, int64_t n,
                                   int64_t n_bins, double *q, double *c) {
-  return guarded_on("asp_topography_power_spectrum", grid_of(grid), [&](asp::capi::Agreement &agreement) {
+  return guarded_on("asp_topography_power_spectrum", grid_of(grid), [&](Agreement &agreement) {
     const asp::Grid &g = grid_for(grid, heights, n);
     asp::require_finite_array(heights, n, "heights");
     asp::require_not_null(q, "q");

@@ -49,9 +49,9 @@ class MpiRealFft final : public RealTransform {
     std::lock_guard<std::mutex> lock(fft_planner::mutex());
     fftw_mpi_ready();
     ptrdiff_t local_rows = 0, offset = 0, local_columns = 0, column_offset = 0;
-    const ptrdiff_t alloc = fftw_mpi_local_size_2d_transposed(
-        s.rows, s.complex_columns, communicator, &local_rows, &offset, &local_columns,
-        &column_offset);
+    const ptrdiff_t alloc =
+        fftw_mpi_local_size_2d_transposed(s.rows, s.complex_columns, communicator, &local_rows,
+                                          &offset, &local_columns, &column_offset);
     rows_ = local_rows;
     spectral_ = static_cast<std::int64_t>(local_columns) * ny;
     buffer_ = Spectrum(static_cast<std::size_t>(std::max<ptrdiff_t>(alloc, 1)));
@@ -133,8 +133,7 @@ class MpiPartition final : public Partition {
   }
 
   std::unique_ptr<RealTransform> real_transform(std::int64_t nx, std::int64_t ny,
-                                                FftPlanning planning,
-                                                int threads) const override {
+                                                FftPlanning planning, int threads) const override {
     return std::make_unique<MpiRealFft>(nx, ny, communicator_, planning, threads);
   }
 
@@ -180,9 +179,8 @@ class MpiPartition final : public Partition {
     MPI_Bcast(&length, 1, MPI_INT, root, communicator_);
     message.resize(static_cast<std::size_t>(length));
     MPI_Bcast(&message[0], length, MPI_CHAR, root, communicator_);
-    throw Error(static_cast<Status>(*first),
-                "on process " + std::to_string(root) + " of " + std::to_string(ranks_) + ": " +
-                    message);
+    throw Error(static_cast<Status>(*first), "on process " + std::to_string(root) + " of " +
+                                                 std::to_string(ranks_) + ": " + message);
   }
 
   int first_differing(const double *values, int count, double *theirs) const override {
@@ -207,8 +205,7 @@ class MpiPartition final : public Partition {
     MPI_Allgather(values, count, MPI_DOUBLE, all.data(), count, MPI_DOUBLE, communicator_);
     for (int k = 0; k < count; ++k) {
       double total = all[static_cast<std::size_t>(k)];
-      for (int r = 1; r < ranks_; ++r)
-        fold(total, all[static_cast<std::size_t>(r) * count + k]);
+      for (int r = 1; r < ranks_; ++r) fold(total, all[static_cast<std::size_t>(r) * count + k]);
       values[k] = total;
     }
   }

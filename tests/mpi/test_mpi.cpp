@@ -93,7 +93,8 @@ void slabs_cover_the_grid(int64_t nx, int64_t ny) {
   int64_t next = 0;
   for (int r = 0; r < ranks; ++r) {
     const int64_t offset = all[2 * r], rows = all[2 * r + 1];
-    if (rows > 0 && offset != next) fail("slabs of " + std::to_string(ny) + " rows are not in order");
+    if (rows > 0 && offset != next)
+      fail("slabs of " + std::to_string(ny) + " rows are not in order");
     if (rows > 0) next = offset + rows;
   }
   if (next != ny) fail("slabs of " + std::to_string(ny) + " rows do not cover the grid");
@@ -107,7 +108,8 @@ void generators_give_the_serial_surface(int64_t nx, int64_t ny) {
   const std::string where = std::to_string(nx) + "x" + std::to_string(ny);
   const std::vector<double> whole = rough(g.serial, nx * ny, 42);
   const std::vector<double> mine = rough(g.distributed, g.slab.pixels, 42);
-  if (mine != rows_of(whole, nx, g.slab)) fail("self-affine surface " + where + " is not the serial one");
+  if (mine != rows_of(whole, nx, g.slab))
+    fail("self-affine surface " + where + " is not the serial one");
 
   std::vector<double> a(static_cast<size_t>(nx * ny)), b(static_cast<size_t>(g.slab.pixels));
   require_ok(asp_topography_sinusoid(g.serial, 1.0, 2, 3, a.data(), nx * ny), "sinusoid");
@@ -121,7 +123,8 @@ void generators_give_the_serial_surface(int64_t nx, int64_t ny) {
   // Statistics and detrending are of the whole surface.
   double serial[3], distributed[3];
   require_ok(asp_topography_statistics(g.serial, whole.data(), nx * ny, &serial[0], &serial[1],
-                                       &serial[2]), "statistics");
+                                       &serial[2]),
+             "statistics");
   std::vector<double> local = mine;
   require_ok(asp_topography_statistics(g.distributed, data_or_null(local), g.slab.pixels,
                                        &distributed[0], &distributed[1], &distributed[2]),
@@ -133,9 +136,11 @@ void generators_give_the_serial_surface(int64_t nx, int64_t ny) {
   for (int64_t j = 0; j < ny; ++j)
     for (int64_t i = 0; i < nx; ++i) tilted[i + nx * j] += 0.01 * i - 0.02 * j + 3.0;
   std::vector<double> tilted_mine = rows_of(tilted, nx, g.slab);
-  require_ok(asp_topography_detrend(g.serial, ASP_DETREND_PLANE, tilted.data(), nx * ny), "detrend");
+  require_ok(asp_topography_detrend(g.serial, ASP_DETREND_PLANE, tilted.data(), nx * ny),
+             "detrend");
   require_ok(asp_topography_detrend(g.distributed, ASP_DETREND_PLANE, data_or_null(tilted_mine),
-                                    g.slab.pixels), "detrend");
+                                    g.slab.pixels),
+             "detrend");
   const std::vector<double> expected = rows_of(tilted, nx, g.slab);
   for (size_t k = 0; k < expected.size(); ++k)
     if (std::fabs(expected[k] - tilted_mine[k]) > 1e-12) {
@@ -179,7 +184,8 @@ Outcome solve(asp_grid *grid, int64_t count, const std::vector<double> &heights,
   if (*c.variable != '\0')
     require_ok(asp_solver_set_option_string(solver, "variable", c.variable), "variable");
   const double value = c.control == ASP_CONTROL_PENETRATION ? penetration : 0.005;
-  require_ok(asp_solver_solve(solver, system, c.control, value), std::string("solve ") + c.algorithm);
+  require_ok(asp_solver_solve(solver, system, c.control, value),
+             std::string("solve ") + c.algorithm);
   require_ok(asp_solver_converged(solver, &out.converged), "converged");
   require_ok(asp_solver_iterations(solver, &out.iterations), "iterations");
   out.pressure.resize(static_cast<size_t>(count));
@@ -208,16 +214,19 @@ double largest_difference(const std::vector<double> &a, const std::vector<double
 
 void solver_gives_the_serial_result(const Case &c, int64_t nx, int64_t ny) {
   Grids g(nx, ny);
-  const std::string name = std::string(c.algorithm) + (*c.variable ? std::string("/") + c.variable : "") +
-                           (c.wall == Wall::hard ? " hard" : c.wall == Wall::adhesive ? " adhesive" : " soft") +
+  const std::string name = std::string(c.algorithm) +
+                           (*c.variable ? std::string("/") + c.variable : "") +
+                           (c.wall == Wall::hard       ? " hard"
+                            : c.wall == Wall::adhesive ? " adhesive"
+                                                       : " soft") +
                            " " + std::to_string(nx) + "x" + std::to_string(ny);
   const std::vector<double> whole = rough(g.serial, nx * ny, 7);
-  const double range = *std::max_element(whole.begin(), whole.end()) -
-                       *std::min_element(whole.begin(), whole.end());
+  const double range =
+      *std::max_element(whole.begin(), whole.end()) - *std::min_element(whole.begin(), whole.end());
   const double penetration = 0.15 * range;
   const Outcome serial = solve(g.serial, nx * ny, whole, c, penetration);
-  const Outcome distributed = solve(g.distributed, g.slab.pixels, rows_of(whole, nx, g.slab), c,
-                                    penetration);
+  const Outcome distributed =
+      solve(g.distributed, g.slab.pixels, rows_of(whole, nx, g.slab), c, penetration);
   if (!serial.converged || !distributed.converged) {
     fail(name + ": did not converge (serial " + std::to_string(serial.converged) +
          ", distributed " + std::to_string(distributed.converged) + ")");
@@ -225,20 +234,23 @@ void solver_gives_the_serial_result(const Case &c, int64_t nx, int64_t ny) {
   }
   // The largest magnitudes are those of the whole fields, the same on every process.
   double scale[2] = {largest(serial.pressure), largest(serial.gap)};
-  const std::vector<double> p = rows_of(serial.pressure, nx, g.slab), u = rows_of(serial.gap, nx, g.slab);
+  const std::vector<double> p = rows_of(serial.pressure, nx, g.slab),
+                            u = rows_of(serial.gap, nx, g.slab);
   double difference[2] = {largest_difference(p, distributed.pressure),
                           largest_difference(u, distributed.gap)};
   MPI_Allreduce(MPI_IN_PLACE, difference, 2, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
   char line[256];
-  std::snprintf(line, sizeof line, "%s: pressure %.1e, gap %.1e of their largest; %lld/%lld iterations",
-                name.c_str(), difference[0] / scale[0], difference[1] / scale[1],
-                static_cast<long long>(serial.iterations), static_cast<long long>(distributed.iterations));
+  std::snprintf(
+      line, sizeof line, "%s: pressure %.1e, gap %.1e of their largest; %lld/%lld iterations",
+      name.c_str(), difference[0] / scale[0], difference[1] / scale[1],
+      static_cast<long long>(serial.iterations), static_cast<long long>(distributed.iterations));
   if (rank == 0) std::printf("%s\n", line);
   if (difference[0] > 1e-10 * scale[0] || difference[1] > 1e-10 * scale[1]) fail(line);
   for (int k = 0; k < 4; ++k)
-    if (std::fabs(serial.scalars[k] - distributed.scalars[k]) > 1e-10 * std::fabs(serial.scalars[k]) + 1e-300)
-      fail(name + ": scalar " + std::to_string(k) + " " + std::to_string(serial.scalars[k]) + " vs " +
-           std::to_string(distributed.scalars[k]));
+    if (std::fabs(serial.scalars[k] - distributed.scalars[k]) >
+        1e-10 * std::fabs(serial.scalars[k]) + 1e-300)
+      fail(name + ": scalar " + std::to_string(k) + " " + std::to_string(serial.scalars[k]) +
+           " vs " + std::to_string(distributed.scalars[k]));
 }
 
 // ---- bad input on one process --------------------------------------------------------------
@@ -282,18 +294,22 @@ void bad_input_on_one_process_fails_on_all() {
   expect_everywhere(asp_system_set_topography(system, longer.data(), count), ASP_ERR_SIZE_MISMATCH,
                     "a wrong count on the last process");
   // The handles are still usable.
-  require_ok(asp_system_set_topography(system, data_or_null(h), g.slab.pixels), "good heights after bad");
+  require_ok(asp_system_set_topography(system, data_or_null(h), g.slab.pixels),
+             "good heights after bad");
 
   // Different sizes on one process.
   asp_grid *odd = nullptr;
-  const int status = asp_grid_create_mpi(MPI_COMM_WORLD, rank == last ? 33 : 32, 24, 32.0, 24.0, &odd);
-  if (ranks > 1) expect_everywhere(status, ASP_ERR_INVALID_ARGUMENT, "different sizes on one process");
+  const int status =
+      asp_grid_create_mpi(MPI_COMM_WORLD, rank == last ? 33 : 32, 24, 32.0, 24.0, &odd);
+  if (ranks > 1)
+    expect_everywhere(status, ASP_ERR_INVALID_ARGUMENT, "different sizes on one process");
   asp_grid_destroy(odd);
 
   // The free substrate is not distributed.
   asp_system *free_system = nullptr;
   const int free_status = asp_system_create_free(g.distributed, 1.0, &free_system);
-  if (free_status != ASP_ERR_UNSUPPORTED) fail("a free system on a distributed grid was not refused");
+  if (free_status != ASP_ERR_UNSUPPORTED)
+    fail("a free system on a distributed grid was not refused");
   asp_system_destroy(free_system);
 
   // A callback that fails on one process fails the solve on all.
@@ -311,7 +327,8 @@ void bad_input_on_one_process_fails_on_all() {
   require_ok(asp_solver_solve(solver, system, ASP_CONTROL_PENETRATION, 0.1), "cancelled solve");
   int reason = 0;
   require_ok(asp_solver_termination(solver, &reason), "termination");
-  if (reason != ASP_TERMINATION_CANCELLED) fail("a cancel on one process did not stop every process");
+  if (reason != ASP_TERMINATION_CANCELLED)
+    fail("a cancel on one process did not stop every process");
   asp_solver_destroy(solver);
   asp_system_destroy(system);
 }
@@ -356,7 +373,9 @@ int main(int argc, char **argv) {
 
   int total = failures;
   MPI_Allreduce(MPI_IN_PLACE, &total, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
-  if (rank == 0) std::printf("%s: %d failed checks on %d processes\n", total ? "FAILED" : "passed", total, ranks);
+  if (rank == 0)
+    std::printf("%s: %d failed checks on %d processes\n", total ? "FAILED" : "passed", total,
+                ranks);
   MPI_Finalize();
   return total == 0 ? 0 : 1;
 }
