@@ -260,8 +260,10 @@ ASP_EXPORT int asp_topography_double_sinewave(const asp_grid *grid, double ampli
  * rms slope (ASP_RMS_SLOPE), as asp_topography_statistics measures them; the mean height is
  * 0. A target whose surface would have heights beyond the largest double (a Gaussian surface
  * peaks at several times its rms height) is refused ('target').
- * The surface is white noise from the seed, filtered by sqrt(C): the same seed and grid give
- * the same surface on every platform (to the last bits of the math library's cos and log). */
+ * The surface is white noise from the seed, filtered by sqrt(C): each wavevector's noise is
+ * drawn from a stream keyed by the seed and the wavevector. The same seed and grid give the
+ * same surface on every platform (to the last bits of the math library's cos and log), in
+ * every run whatever was planned before, and on any number of MPI processes, to the bit. */
 #define ASP_RMS_HEIGHT 201
 #define ASP_RMS_SLOPE 202
 ASP_EXPORT int asp_topography_self_affine(const asp_grid *grid, double hurst, double long_cutoff,
