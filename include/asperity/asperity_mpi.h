@@ -16,7 +16,9 @@
  * Every function of asperity.h works on such a grid and on the systems and solvers made on
  * it, with these rules:
  *   - Calls on them are collective: every process makes the same calls in the same order,
- *     with the same scalar arguments, from one thread.
+ *     with the same scalar arguments and solver options, from one thread. Scalars and options
+ *     that differ between processes are refused on every process (ASP_ERR_INVALID_ARGUMENT,
+ *     naming the first differing process) before anything is computed.
  *   - A call that fails on one process fails on all, with the same status and the message of
  *     the first failing process, which names it ("on process 1 of 3: array 'heights' ...").
  *     Arrays are checked on each process before the processes wait for each other, so that a

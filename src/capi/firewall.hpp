@@ -4,9 +4,12 @@
 // function. Nothing escapes into C.
 #pragma once
 
+#include <cstdint>
+#include <cstring>
 #include <new>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "asperity/asperity.h"
 #include "core/error.hpp"
@@ -49,11 +52,36 @@ int guarded(const char *function, Body &&body) noexcept {
 // nothing.
 class Agreement {
  public:
+  // An integer argument among the scalars checked below: its bits, not its value rounded to
+  // a double.
+  static double bits(std::int64_t value) {
+    double d;
+    std::memcpy(&d, &value, sizeof d);
+    return d;
+  }
+
   explicit Agreement(const Grid *grid) : partition_(grid ? grid->partition() : nullptr) {}
   void checks_passed() {
     if (partition_ == nullptr || done_) return;
     done_ = true;
     partition_->agree(nullptr);
+  }
+  // The same, and the call's scalar arguments (`what` names them) must be the same bits on
+  // every process: processes given different loads, parameters or options would compute
+  // different things and stop at different iterations, so every process fails instead,
+  // naming the first one that differs.
+  void checks_passed(const std::vector<double> &scalars, const char *what) {
+    if (partition_ == nullptr || done_) return;
+    checks_passed();
+    std::vector<double> theirs(scalars.size());
+    const int differing = partition_->first_differing(
+        scalars.data(), static_cast<int>(scalars.size()), theirs.data());
+    if (differing >= 0)
+      throw Error(Status::invalid_argument,
+                  "on process " + std::to_string(differing) + " of " +
+                      std::to_string(partition_->ranks()) + ": " + what +
+                      " differ from process 0's; a call on a distributed grid takes the same "
+                      "scalar arguments on every process");
   }
   // This process failed before its checks passed: the others learn it at their agreement.
   void failed(const Error &error) {

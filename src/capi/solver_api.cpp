@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // asp_algorithms and asp_solver_*: algorithms, their options, solves, reports and histories.
 #include <string>
+#include <vector>
 
 #include "capi/constants.hpp"
 #include "capi/firewall.hpp"
@@ -148,7 +149,10 @@ int asp_solver_solve(asp_solver *solver, asp_system *system, int control, double
     solver->solver->forget_last_solve();
     asp::require_not_null(system, "system");
     const asp::Control c = control_of(control);
-    agreement.checks_passed();
+    std::vector<double> scalars = solver->solver->fingerprint();
+    scalars.push_back(static_cast<double>(control));
+    scalars.push_back(value);
+    agreement.checks_passed(scalars, "arguments 'control' and 'value' or the solver's options");
     solver->solver->solve(*system->system, c, value);
   });
 }

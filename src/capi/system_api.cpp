@@ -29,7 +29,7 @@ int asp_system_create(const asp_grid *grid, double contact_modulus, asp_system *
   return guarded_on("asp_system_create", grid_of(grid), [&](Agreement &agreement) {
     asp::require_not_null(grid, "grid");
     asp::require_not_null(out, "out");
-    agreement.checks_passed();
+    agreement.checks_passed({contact_modulus}, "argument 'contact_modulus'");
     std::unique_ptr<asp_system> handle(new asp_system);
     handle->system.reset(new asp::System(grid->grid, contact_modulus));
     *out = handle.release();
@@ -41,7 +41,7 @@ int asp_system_create_free(const asp_grid *grid, double contact_modulus, asp_sys
   return guarded_on("asp_system_create_free", grid_of(grid), [&](Agreement &agreement) {
     asp::require_not_null(grid, "grid");
     asp::require_not_null(out, "out");
-    agreement.checks_passed();
+    agreement.checks_passed({contact_modulus}, "argument 'contact_modulus'");
     std::unique_ptr<asp_system> handle(new asp_system);
     handle->system.reset(new asp::System(grid->grid, contact_modulus, asp::SubstrateKind::free));
     *out = handle.release();
@@ -61,31 +61,37 @@ int asp_system_set_topography(asp_system *system, const double *heights, int64_t
 }
 
 int asp_system_set_k0(asp_system *system, double k0) {
-  return guarded_on("asp_system_set_k0", grid_of(system), [&](Agreement &) {
+  return guarded_on("asp_system_set_k0", grid_of(system), [&](Agreement &agreement) {
     asp::require_not_null(system, "system");
+    agreement.checks_passed({k0}, "argument 'k0'");
     system->system->set_k0(k0);
   });
 }
 
 int asp_system_set_adhesion(asp_system *system, double work_of_adhesion, double range) {
-  return guarded_on("asp_system_set_adhesion", grid_of(system), [&](Agreement &) {
+  return guarded_on("asp_system_set_adhesion", grid_of(system), [&](Agreement &agreement) {
     asp::require_not_null(system, "system");
+    agreement.checks_passed({work_of_adhesion, range}, "arguments 'work_of_adhesion' and 'range'");
     system->system->set_adhesion(work_of_adhesion, range);
   });
 }
 
 int asp_system_set_soft_wall(asp_system *system, double gamma_r, double rho_r, double gamma_a,
                              double rho_a) {
-  return guarded_on("asp_system_set_soft_wall", grid_of(system), [&](Agreement &) {
+  return guarded_on("asp_system_set_soft_wall", grid_of(system), [&](Agreement &agreement) {
     asp::require_not_null(system, "system");
+    agreement.checks_passed({gamma_r, rho_r, gamma_a, rho_a},
+                            "arguments 'gamma_r', 'rho_r', 'gamma_a' and 'rho_a'");
     system->system->set_soft_wall(gamma_r, rho_r, gamma_a, rho_a);
   });
 }
 
 int asp_system_set_lennard_jones(asp_system *system, double work_of_adhesion,
                                  double equilibrium_distance) {
-  return guarded_on("asp_system_set_lennard_jones", grid_of(system), [&](Agreement &) {
+  return guarded_on("asp_system_set_lennard_jones", grid_of(system), [&](Agreement &agreement) {
     asp::require_not_null(system, "system");
+    agreement.checks_passed({work_of_adhesion, equilibrium_distance},
+                            "arguments 'work_of_adhesion' and 'equilibrium_distance'");
     system->system->set_lennard_jones(work_of_adhesion, equilibrium_distance);
   });
 }
@@ -103,18 +109,22 @@ static_assert(std::is_same<asp_potential_fn, asp::PotentialFunction>::value,
 
 int asp_system_set_potential(asp_system *system, asp_potential_fn fn, void *user_data,
                              int hard_wall) {
-  return guarded_on("asp_system_set_potential", grid_of(system), [&](Agreement &) {
+  return guarded_on("asp_system_set_potential", grid_of(system), [&](Agreement &agreement) {
     asp::require_not_null(system, "system");
+    asp::require_not_null(reinterpret_cast<const void *>(fn), "fn");
+    agreement.checks_passed({static_cast<double>(hard_wall != 0)}, "argument 'hard_wall'");
     system->system->set_user_potential(fn, user_data, hard_wall != 0);
   });
 }
 
 int asp_system_set_reference_pressure(asp_system *system, double reference_pressure) {
-  return guarded_on("asp_system_set_reference_pressure", grid_of(system), [&](Agreement &) {
-    asp::require_not_null(system, "system");
-    asp::require_non_negative(reference_pressure, "reference_pressure");
-    system->system->set_reference_pressure(reference_pressure);
-  });
+  return guarded_on(
+      "asp_system_set_reference_pressure", grid_of(system), [&](Agreement &agreement) {
+        asp::require_not_null(system, "system");
+        agreement.checks_passed({reference_pressure}, "argument 'reference_pressure'");
+        asp::require_non_negative(reference_pressure, "reference_pressure");
+        system->system->set_reference_pressure(reference_pressure);
+      });
 }
 
 int asp_system_reset(asp_system *system) {

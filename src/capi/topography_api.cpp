@@ -34,7 +34,7 @@ int asp_topography_detrend(const asp_grid *grid, int mode, double *heights, int6
                                  : mode == ASP_DETREND_PLANE ? asp::Detrend::plane
                                                              : asp::Detrend::curvature;
     asp::require_finite_array(heights, n, "heights");
-    agreement.checks_passed();
+    agreement.checks_passed({Agreement::bits(mode)}, "argument 'mode'");
     asp::detrend_topography(g, detrend, heights);
   });
 }
@@ -46,29 +46,38 @@ int asp_topography_flat(const asp_grid *grid, double *heights, int64_t n) {
 }
 
 int asp_topography_sphere(const asp_grid *grid, double radius, double *heights, int64_t n) {
-  return guarded_on("asp_topography_sphere", grid_of(grid), [&](Agreement &) {
-    asp::sphere_topography(grid_for(grid, heights, n), radius, heights);
+  return guarded_on("asp_topography_sphere", grid_of(grid), [&](Agreement &agreement) {
+    const asp::Grid &g = grid_for(grid, heights, n);
+    agreement.checks_passed({radius}, "argument 'radius'");
+    asp::sphere_topography(g, radius, heights);
   });
 }
 
 int asp_topography_paraboloid(const asp_grid *grid, double radius, double *heights, int64_t n) {
-  return guarded_on("asp_topography_paraboloid", grid_of(grid), [&](Agreement &) {
-    asp::paraboloid_topography(grid_for(grid, heights, n), radius, heights);
+  return guarded_on("asp_topography_paraboloid", grid_of(grid), [&](Agreement &agreement) {
+    const asp::Grid &g = grid_for(grid, heights, n);
+    agreement.checks_passed({radius}, "argument 'radius'");
+    asp::paraboloid_topography(g, radius, heights);
   });
 }
 
 int asp_topography_sinusoid(const asp_grid *grid, double amplitude, int64_t periods_x,
                             int64_t periods_y, double *heights, int64_t n) {
-  return guarded_on("asp_topography_sinusoid", grid_of(grid), [&](Agreement &) {
-    asp::sinusoid_topography(grid_for(grid, heights, n), amplitude, periods_x, periods_y, heights);
+  return guarded_on("asp_topography_sinusoid", grid_of(grid), [&](Agreement &agreement) {
+    const asp::Grid &g = grid_for(grid, heights, n);
+    agreement.checks_passed({amplitude, Agreement::bits(periods_x), Agreement::bits(periods_y)},
+                            "arguments 'amplitude', 'periods_x' and 'periods_y'");
+    asp::sinusoid_topography(g, amplitude, periods_x, periods_y, heights);
   });
 }
 
 int asp_topography_double_sinewave(const asp_grid *grid, double amplitude, double ripple_amplitude,
                                    int64_t ripple_periods, double *heights, int64_t n) {
-  return guarded_on("asp_topography_double_sinewave", grid_of(grid), [&](Agreement &) {
-    asp::double_sinewave_topography(grid_for(grid, heights, n), amplitude, ripple_amplitude,
-                                    ripple_periods, heights);
+  return guarded_on("asp_topography_double_sinewave", grid_of(grid), [&](Agreement &agreement) {
+    const asp::Grid &g = grid_for(grid, heights, n);
+    agreement.checks_passed({amplitude, ripple_amplitude, Agreement::bits(ripple_periods)},
+                            "arguments 'amplitude', 'ripple_amplitude' and 'ripple_periods'");
+    asp::double_sinewave_topography(g, amplitude, ripple_amplitude, ripple_periods, heights);
   });
 }
 
@@ -87,7 +96,9 @@ int asp_topography_self_affine(const asp_grid *grid, double hurst, double long_c
                                          : asp::RoughnessNorm::rms_slope;
     p.target = target;
     p.seed = static_cast<std::uint64_t>(seed);
-    agreement.checks_passed();
+    agreement.checks_passed({hurst, long_cutoff, rolloff, short_cutoff, Agreement::bits(normalise),
+                             target, Agreement::bits(seed)},
+                            "the generator's parameters (hurst, cutoffs, normalise, target, seed)");
     asp::self_affine_topography(g, p, heights);
   });
 }
@@ -109,7 +120,7 @@ int asp_topography_power_spectrum(const asp_grid *grid, const double *heights, i
     asp::require_finite_array(heights, n, "heights");
     asp::require_not_null(q, "q");
     asp::require_not_null(c, "c");
-    agreement.checks_passed();
+    agreement.checks_passed({Agreement::bits(n_bins)}, "argument 'n_bins'");
     asp::radial_power_spectrum(g, heights, n_bins, q, c);
   });
 }

@@ -4,6 +4,8 @@
 #include "core/threads.hpp"
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 #include "core/checks.hpp"
 #include "core/error.hpp"
@@ -71,6 +73,30 @@ double Solver::option(const std::string &name) const {
     throw Error(Status::invalid_argument,
                 "option '" + name + "' is a string (read it with asp_solver_get_option_string)");
   return options_.number(name);
+}
+
+namespace {
+// FNV-1a of a text, its bits carried in a double (compared bit for bit, never computed with).
+double text_hash(const std::string &text) {
+  std::uint64_t hash = 14695981039346656037ULL;
+  for (const unsigned char c : text) hash = (hash ^ c) * 1099511628211ULL;
+  double bits;
+  std::memcpy(&bits, &hash, sizeof bits);
+  return bits;
+}
+}  // namespace
+
+std::vector<double> Solver::fingerprint() const {
+  std::vector<double> values{text_hash(algorithm_.name)};
+  for (const auto &number : options_.numbers) {
+    values.push_back(text_hash(number.first));
+    values.push_back(number.second);
+  }
+  for (const auto &text : options_.texts) {
+    values.push_back(text_hash(text.first));
+    values.push_back(text_hash(text.second));
+  }
+  return values;
 }
 
 const std::string &Solver::option_text(const std::string &name) const {

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "physics/system.hpp"
 #include "solvers/control.hpp"
@@ -45,6 +46,9 @@ class Solver {
   void set_option(const std::string &name, const std::string &value);
   double option(const std::string &name) const;
   const std::string &option_text(const std::string &name) const;
+  // The algorithm and every option value as numbers (names and texts by a hash), so that
+  // the processes of a distributed solve can check that they solve alike.
+  std::vector<double> fingerprint() const;
 
   void set_progress(ProgressFunction progress, void *user_data);
   void set_history(bool on) { record_history_ = on; }

@@ -305,6 +305,22 @@ void bad_input_on_one_process_fails_on_all() {
     expect_everywhere(status, ASP_ERR_INVALID_ARGUMENT, "different sizes on one process");
   asp_grid_destroy(odd);
 
+  // Different scalar arguments or solver options on one process: every process fails,
+  // before anything is computed, rather than solving different problems.
+  if (ranks > 1) {
+    expect_everywhere(asp_system_set_adhesion(system, 0.02, rank == last ? 0.4 : 0.3),
+                      ASP_ERR_INVALID_ARGUMENT, "a different range on the last process");
+    asp_solver *differing = nullptr;
+    require_ok(asp_solver_create("pk", &differing), "solver");
+    require_ok(asp_solver_set_tolerance(differing, rank == last ? 1e-9 : 1e-8), "tolerance");
+    expect_everywhere(asp_solver_solve(differing, system, ASP_CONTROL_MEAN_PRESSURE, 0.01),
+                      ASP_ERR_INVALID_ARGUMENT, "a different tolerance on the last process");
+    expect_everywhere(
+        asp_solver_solve(differing, system, ASP_CONTROL_MEAN_PRESSURE, rank == last ? 0.02 : 0.01),
+        ASP_ERR_INVALID_ARGUMENT, "a different load on the last process");
+    asp_solver_destroy(differing);
+  }
+
   // The free substrate is not distributed.
   asp_system *free_system = nullptr;
   const int free_status = asp_system_create_free(g.distributed, 1.0, &free_system);
