@@ -124,8 +124,20 @@ void Grid::require_serial(const char *what) const {
 const RealTransform &Grid::fft() const {
   if (!partition_) return real_fft(nx_, ny_);
   std::lock_guard<std::mutex> lock(plans_mutex_);
-  if (!distributed_plan_)
+  if (!distributed_plan_) {
+    // FFTW-MPI plans together: a process that measures while another estimates would wait
+    // for it forever. Refused on every process instead.
+    const double measure = planning_ == FftPlanning::measure ? 1.0 : 0.0;
+    double theirs = 0.0;
+    const int differing = partition_->first_differing(&measure, 1, &theirs);
+    if (differing >= 0)
+      throw Error(Status::invalid_state,
+                  "on process " + std::to_string(differing) + " of " +
+                      std::to_string(partition_->ranks()) +
+                      ": the grid's FFT planning (asp_grid_set_fft_planning) differs from "
+                      "process 0's; set the same planning on every process");
     distributed_plan_ = partition_->real_transform(nx_, ny_, planning_, threads_);
+  }
   return *distributed_plan_;
 }
 

@@ -321,6 +321,23 @@ void bad_input_on_one_process_fails_on_all() {
     asp_solver_destroy(differing);
   }
 
+  // A different FFT planning on one process: the first transform is refused on every
+  // process (FFTW-MPI plans together).
+  if (ranks > 1) {
+    asp_grid *planned = nullptr;
+    require_ok(asp_grid_create_mpi(MPI_COMM_WORLD, 16, 12, 16.0, 12.0, &planned), "grid");
+    require_ok(
+        asp_grid_set_fft_planning(planned, rank == last ? ASP_FFT_ESTIMATE : ASP_FFT_MEASURE),
+        "planning");
+    const Slab s = slab_of(planned);
+    std::vector<double> heights(static_cast<size_t>(s.pixels), 0.0);
+    double height = 0.0;
+    expect_everywhere(asp_topography_statistics(planned, data_or_null(heights), s.pixels, &height,
+                                                nullptr, nullptr),
+                      ASP_ERR_INVALID_STATE, "a different FFT planning on the last process");
+    asp_grid_destroy(planned);
+  }
+
   // The free substrate is not distributed.
   asp_system *free_system = nullptr;
   const int free_status = asp_system_create_free(g.distributed, 1.0, &free_system);
