@@ -23,7 +23,10 @@
  *     the first failing process, which names it ("on process 1 of 3: array 'heights' ...").
  *     Arrays are checked on each process before the processes wait for each other, so that a
  *     bad array on one of them is reported on every one, without a hang. Handles must be
- *     valid (not NULL) on every process.
+ *     valid (not NULL) on every process. What no process can foresee, running out of memory
+ *     on one process in the middle of a solve, is reported on that process only, while the
+ *     others wait for it: a program that cannot tolerate that calls MPI_Abort on such an
+ *     error (ASP_ERR_OUT_OF_MEMORY).
  *   - Every solver runs distributed on a periodic substrate. The free (non-periodic)
  *     substrate is not distributed: asp_system_create_free returns ASP_ERR_UNSUPPORTED.
  *   - Generators give the same global surface for any number of processes, to the bit:

@@ -139,7 +139,8 @@ int asp_system_get(const asp_system *system, int key, double *value) {
     asp::require_not_null(system, "system");
     asp::require_not_null(value, "value");
     asp::capi::require_member(key, asp::capi::Family::scalar_key, "key");
-    agreement.checks_passed();
+    // Keys differ in the sums and transforms they take: all processes must ask for the same.
+    agreement.checks_passed({Agreement::bits(key)}, "argument 'key'");
     const asp::System &s = *system->system;
     const asp::ExponentialAdhesion *adhesion = asp::exponential_adhesion(s.interaction());
     double result = 0.0;

@@ -70,6 +70,11 @@ class MpiRealFft final : public RealTransform {
     }
   }
   ~MpiRealFft() override {
+    // After MPI_Finalize (a handle released late, at a program's or interpreter's exit) the
+    // plans' communicators are gone: they are left to the process's end.
+    int finalized = 0;
+    MPI_Finalized(&finalized);
+    if (finalized) return;
     std::lock_guard<std::mutex> lock(fft_planner::mutex());
     fftw_destroy_plan(r2c_);
     fftw_destroy_plan(c2r_);

@@ -26,8 +26,8 @@ class PeriodicHalfSpace final : public Substrate {
   void forward(const double *field, Complex *spectrum) const override;
   void backward(Complex *spectrum, double *field) const override;
   double transform_points() const override { return static_cast<double>(grid_.n_pixels()); }
-  // The surface is the grid.
-  std::int64_t surface_size() const override { return grid_.n_pixels(); }
+  // The surface is the grid (this process's pixels of it).
+  std::int64_t surface_size() const override { return grid_.local_pixels(); }
   void surface_forward(const double *field, Complex *spectrum) const override {
     forward(field, spectrum);
   }

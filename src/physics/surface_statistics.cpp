@@ -156,9 +156,12 @@ double rms_slope_within_box(const Grid &grid, const double *heights) {
 void surface_statistics(const Grid &grid, const double *heights, double *rms_height,
                         double *rms_slope, double *rms_curvature) {
   const SurfaceStatistics s = surface_statistics(grid, heights);
-  if (rms_height) require_representable(s.rms_height, "rms height");
-  if (rms_slope) require_representable(s.rms_slope, "rms slope");
-  if (rms_curvature) require_representable(s.rms_curvature, "rms curvature");
+  // On a distributed grid every process checks all three, whichever it asked for, so that
+  // the processes fail together.
+  const bool all = grid.partition() != nullptr;
+  if (rms_height || all) require_representable(s.rms_height, "rms height");
+  if (rms_slope || all) require_representable(s.rms_slope, "rms slope");
+  if (rms_curvature || all) require_representable(s.rms_curvature, "rms curvature");
   if (rms_height) *rms_height = s.rms_height;
   if (rms_slope) *rms_slope = s.rms_slope;
   if (rms_curvature) *rms_curvature = s.rms_curvature;

@@ -52,6 +52,7 @@ class Solver {
 
   void set_progress(ProgressFunction progress, void *user_data);
   void set_history(bool on) { record_history_ = on; }
+  bool history_on() const { return record_history_; }
 
   // Forgets the last solve's report and history, so that a refused or failed solve leaves no
   // report behind that could be mistaken for its own.

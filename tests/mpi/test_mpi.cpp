@@ -183,7 +183,10 @@ Outcome solve(asp_grid *grid, int64_t count, const std::vector<double> &heights,
   require_ok(asp_solver_set_max_iterations(solver, 20000), "max_iterations");
   if (*c.variable != '\0')
     require_ok(asp_solver_set_option_string(solver, "variable", c.variable), "variable");
-  const double value = c.control == ASP_CONTROL_PENETRATION ? penetration : 0.005;
+  // Mean pressure 0.005 E*, or the penetration given; a mean gap of half of it.
+  const double value = c.control == ASP_CONTROL_PENETRATION ? penetration
+                       : c.control == ASP_CONTROL_MEAN_GAP  ? 0.5 * penetration
+                                                            : 0.005;
   require_ok(asp_solver_solve(solver, system, c.control, value),
              std::string("solve ") + c.algorithm);
   require_ok(asp_solver_converged(solver, &out.converged), "converged");
@@ -319,6 +322,22 @@ void bad_input_on_one_process_fails_on_all() {
         asp_solver_solve(differing, system, ASP_CONTROL_MEAN_PRESSURE, rank == last ? 0.02 : 0.01),
         ASP_ERR_INVALID_ARGUMENT, "a different load on the last process");
     asp_solver_destroy(differing);
+    // Another algorithm (with another number of options), history on one process only, and
+    // another scalar asked for.
+    asp_solver *other = nullptr;
+    require_ok(asp_solver_create(rank == last ? "lbfgsb" : "pk", &other), "solver");
+    expect_everywhere(asp_solver_solve(other, system, ASP_CONTROL_PENETRATION, 0.1),
+                      ASP_ERR_INVALID_ARGUMENT, "another algorithm on the last process");
+    asp_solver_destroy(other);
+    require_ok(asp_solver_create("pk", &other), "solver");
+    require_ok(asp_solver_set_history(other, rank == 0 ? 1 : 0), "history");
+    expect_everywhere(asp_solver_solve(other, system, ASP_CONTROL_MEAN_PRESSURE, 0.01),
+                      ASP_ERR_INVALID_ARGUMENT, "history on the first process only");
+    asp_solver_destroy(other);
+    double value = 0.0;
+    expect_everywhere(
+        asp_system_get(system, rank == last ? ASP_ELASTIC_ENERGY : ASP_MEAN_PRESSURE, &value),
+        ASP_ERR_INVALID_ARGUMENT, "another key on the last process");
   }
 
   // A different FFT planning on one process: the first transform is refused on every
@@ -394,6 +413,7 @@ int main(int argc, char **argv) {
       {"fire", "", Wall::soft, ASP_CONTROL_PENETRATION},
       {"fire_mass_weighted", "", Wall::soft, ASP_CONTROL_PENETRATION},
       {"gfmd", "", Wall::soft, ASP_CONTROL_PENETRATION},
+      {"bugnicourt", "gap", Wall::hard, ASP_CONTROL_MEAN_GAP},
   };
   for (const Case &c : cases) {
     solver_gives_the_serial_result(c, 64, 64);
@@ -403,6 +423,9 @@ int main(int argc, char **argv) {
   solver_gives_the_serial_result(cases[5], 16, 2);
   solver_gives_the_serial_result(cases[0], 2, 45);
   solver_gives_the_serial_result(cases[6], 2, 45);
+  // One row: every process but one holds none, and the gap's unknowns are only its pixels.
+  solver_gives_the_serial_result(cases[5], 64, 1);
+  solver_gives_the_serial_result(cases[10], 64, 1);
 
   int total = failures;
   MPI_Allreduce(MPI_IN_PLACE, &total, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
