@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // Strong scaling over MPI processes: the solves of asperity_thread_scaling (pk, bugnicourt and
-// lbfgs_fourier on a self-affine surface, the same scenes) on a grid distributed over the
+// lbfgs_fourier on bench/scaling_scene.hpp's scenes) on a grid distributed over the
 // processes this program is started with, one thread each. For each solver and size: the
 // time per iteration of a fixed number of iterations (the tolerance out of reach, the slowest
 // process's time), one FFT pair of the distributed grid in the same run, their ratio, and the
@@ -21,11 +21,8 @@
 #include <string>
 #include <vector>
 
+#include "bench/scaling_scene.hpp"
 #include "core/mpi_partition.hpp"
-#include "physics/surface_statistics.hpp"
-#include "physics/system.hpp"
-#include "physics/topography.hpp"
-#include "solvers/solver.hpp"
 
 namespace {
 
@@ -79,34 +76,10 @@ void run(const char *algorithm, std::int64_t n, int iterations) {
                                             static_cast<double>(n), static_cast<double>(n));
   grid->set_fft_planning(asp::FftPlanning::estimate);
   grid->set_threads(1);
-  asp::SelfAffineParameters p;
-  p.hurst = 0.8;
-  p.long_cutoff = grid->lx();
-  p.rolloff = 0.25 * grid->lx();
-  p.short_cutoff = 4.0;
-  p.norm = asp::RoughnessNorm::rms_slope;
-  p.target = 0.1;
-  p.seed = 1;
-  std::vector<double> h(static_cast<std::size_t>(grid->local_pixels()));
-  asp::self_affine_topography(*grid, p, h.data());
-  asp::System system(grid, 1.0);
-  system.set_topography(h.data());
-  asp::Control control = asp::Control::mean_pressure;
-  double value = 0.005;
-  if (std::strcmp(algorithm, "lbfgs_fourier") == 0) {
-    const double rc = 1.0 / asp::surface_statistics(*grid, h.data()).rms_curvature;
-    system.set_soft_wall(2.10e3 * rc, 0.5, 2.05 * rc, 0.5);
-    control = asp::Control::penetration;
-    value = 0.05 * system.height_range();
-  }
+  bench::ScalingScene scene = bench::scaling_scene(grid, algorithm);
   asp::Solver solver(algorithm);
-  solver.set_option("tolerance", 1e-300);
-  solver.set_option("stall_window", 0.0);
-  solver.set_option("max_iterations", 2.0);
-  solver.solve(system, control, value);  // plans and tables, untimed
-  system.reset_state();
-  solver.set_option("max_iterations", static_cast<double>(iterations));
-  const double seconds = timed([&] { solver.solve(system, control, value); });
+  bench::warm_up(solver, scene, iterations);
+  const double seconds = timed([&] { solver.solve(*scene.system, scene.control, scene.value); });
   const double per_iteration = seconds / static_cast<double>(solver.report().iterations);
   const double pair = fft_pair_seconds(*grid);
   double memory =

@@ -3,11 +3,7 @@
 // given, for pk, bugnicourt and lbfgs_fourier. For each solver and thread count: the time per
 // iteration of a fixed number of iterations (the tolerance out of reach), that time in FFT
 // pairs of the grid with the same threads (measured in the same run), and the parallel
-// efficiency t(1) / (threads t(threads)). Scenes: a self-affine surface (Hurst 0.8, rms slope
-// 0.1, roll-off a quarter of the box, short cutoff 4 pixels) on a periodic substrate, E* = 1;
-// pk and bugnicourt under a mean pressure of 0.005 E* (a few percent of contact), lbfgs_fourier
-// with the exponential soft wall of the soft-wall benchmark's rough scene (range 0.5 pixels)
-// under penetration control.
+// efficiency t(1) / (threads t(threads)). The scenes are bench/scaling_scene.hpp's.
 //
 // usage: asperity_thread_scaling [--size N]... [--threads T] [--iterations K]
 #include <chrono>
@@ -18,10 +14,7 @@
 #include <vector>
 
 #include "bench/bench_common.hpp"
-#include "physics/surface_statistics.hpp"
-#include "physics/system.hpp"
-#include "physics/topography.hpp"
-#include "solvers/solver.hpp"
+#include "bench/scaling_scene.hpp"
 
 namespace {
 
@@ -37,43 +30,13 @@ std::shared_ptr<asp::Grid> make_grid(std::int64_t n, int threads) {
   return grid;
 }
 
-std::vector<double> rough(const asp::Grid &grid) {
-  asp::SelfAffineParameters p;
-  p.hurst = 0.8;
-  p.long_cutoff = grid.lx();
-  p.rolloff = 0.25 * grid.lx();
-  p.short_cutoff = 4.0;
-  p.norm = asp::RoughnessNorm::rms_slope;
-  p.target = 0.1;
-  p.seed = 1;
-  std::vector<double> h(static_cast<std::size_t>(grid.n_pixels()));
-  asp::self_affine_topography(grid, p, h.data());
-  return h;
-}
-
 Run measure(const char *algorithm, std::int64_t n, int threads, int iterations) {
   auto grid = make_grid(n, threads);
-  const std::vector<double> h = rough(*grid);
-  asp::System system(grid, 1.0);
-  system.set_topography(h.data());
-  asp::Control control = asp::Control::mean_pressure;
-  double value = 0.005;
-  if (std::strcmp(algorithm, "lbfgs_fourier") == 0) {
-    const double rc = 1.0 / asp::surface_statistics(*grid, h.data()).rms_curvature;
-    system.set_soft_wall(2.10e3 * rc, 0.5, 2.05 * rc, 0.5);
-    control = asp::Control::penetration;
-    value = 0.05 * system.height_range();
-  }
+  bench::ScalingScene scene = bench::scaling_scene(grid, algorithm);
   asp::Solver solver(algorithm);
-  solver.set_option("tolerance", 1e-300);
-  solver.set_option("stall_window", 0.0);
-  // A first short solve makes the plans and the substrate's tables; then the timed one.
-  solver.set_option("max_iterations", 2.0);
-  solver.solve(system, control, value);
-  system.reset_state();
-  solver.set_option("max_iterations", static_cast<double>(iterations));
+  bench::warm_up(solver, scene, iterations);
   const auto start = std::chrono::steady_clock::now();
-  solver.solve(system, control, value);
+  solver.solve(*scene.system, scene.control, scene.value);
   const double seconds = bench::seconds_since(start);
   Run r;
   r.per_iteration = seconds / static_cast<double>(solver.report().iterations);
