@@ -59,17 +59,6 @@ class Agreement {
     std::memcpy(&d, &value, sizeof d);
     return d;
   }
-  // Values of any number, as one scalar of fixed size (their FNV-1a hash, with their count),
-  // so that processes whose lists differ in length still compare the same number of values.
-  static double digest(const std::vector<double> &values) {
-    std::uint64_t hash = 14695981039346656037ULL ^ values.size();
-    for (const double v : values) {
-      unsigned char b[sizeof v];
-      std::memcpy(b, &v, sizeof v);
-      for (const unsigned char c : b) hash = (hash ^ c) * 1099511628211ULL;
-    }
-    return bits(static_cast<std::int64_t>(hash));
-  }
 
   explicit Agreement(const Grid *grid) : partition_(grid ? grid->partition() : nullptr) {}
   void checks_passed() {

@@ -149,10 +149,10 @@ int asp_solver_solve(asp_solver *solver, asp_system *system, int control, double
     solver->solver->forget_last_solve();
     asp::require_not_null(system, "system");
     const asp::Control c = control_of(control);
-    // The algorithm and its options as one digest (their count differs between algorithms),
+    // The algorithm and its options as one number (their count differs between algorithms),
     // whether the history is kept (it adds sums to each iteration), the control and the value.
     const std::vector<double> scalars = {
-        Agreement::digest(solver->solver->fingerprint()),
+        solver->solver->fingerprint(),
         solver->solver->history_on() ? 1.0 : 0.0, static_cast<double>(control), value};
     agreement.checks_passed(
         scalars, "arguments 'control' and 'value', or the solver's algorithm, options or history");

@@ -76,27 +76,38 @@ double Solver::option(const std::string &name) const {
 }
 
 namespace {
-// FNV-1a of a text, its bits carried in a double (compared bit for bit, never computed with).
-double text_hash(const std::string &text) {
-  std::uint64_t hash = 14695981039346656037ULL;
-  for (const unsigned char c : text) hash = (hash ^ c) * 1099511628211ULL;
-  double bits;
-  std::memcpy(&bits, &hash, sizeof bits);
-  return bits;
-}
+// FNV-1a, fed byte by byte.
+class Fnv1a {
+ public:
+  void add(const void *data, std::size_t size) {
+    const auto *bytes = static_cast<const unsigned char *>(data);
+    for (std::size_t k = 0; k < size; ++k) hash_ = (hash_ ^ bytes[k]) * 1099511628211ULL;
+  }
+  // A text with its end, so that "ab" + "c" and "a" + "bc" differ.
+  void add(const std::string &text) { add(text.c_str(), text.size() + 1); }
+  double bits() const {
+    double d;
+    std::memcpy(&d, &hash_, sizeof d);
+    return d;
+  }
+
+ private:
+  std::uint64_t hash_ = 14695981039346656037ULL;
+};
 }  // namespace
 
-std::vector<double> Solver::fingerprint() const {
-  std::vector<double> values{text_hash(algorithm_.name)};
+double Solver::fingerprint() const {
+  Fnv1a hash;
+  hash.add(algorithm_.name);
   for (const auto &number : options_.numbers) {
-    values.push_back(text_hash(number.first));
-    values.push_back(number.second);
+    hash.add(number.first);
+    hash.add(&number.second, sizeof number.second);
   }
   for (const auto &text : options_.texts) {
-    values.push_back(text_hash(text.first));
-    values.push_back(text_hash(text.second));
+    hash.add(text.first);
+    hash.add(text.second);
   }
-  return values;
+  return hash.bits();
 }
 
 const std::string &Solver::option_text(const std::string &name) const {

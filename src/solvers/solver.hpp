@@ -46,9 +46,10 @@ class Solver {
   void set_option(const std::string &name, const std::string &value);
   double option(const std::string &name) const;
   const std::string &option_text(const std::string &name) const;
-  // The algorithm and every option value as numbers (names and texts by a hash), so that
-  // the processes of a distributed solve can check that they solve alike.
-  std::vector<double> fingerprint() const;
+  // The algorithm and every option's name and value as one number (an FNV-1a hash, its bits
+  // in a double: compared bit for bit, never computed with), so that the processes of a
+  // distributed solve can check that they solve alike.
+  double fingerprint() const;
 
   void set_progress(ProgressFunction progress, void *user_data);
   void set_history(bool on) { record_history_ = on; }
