@@ -27,8 +27,9 @@
  *     on one process in the middle of a solve, is reported on that process only, while the
  *     others wait for it: a program that cannot tolerate that calls MPI_Abort on such an
  *     error (ASP_ERR_OUT_OF_MEMORY).
- *   - Every solver runs distributed on a periodic substrate. The free (non-periodic)
- *     substrate is not distributed: asp_system_create_free returns ASP_ERR_UNSUPPORTED.
+ *   - Every solver runs distributed, on the periodic and on the free (non-periodic)
+ *     substrate (asp_system_create_free: its grid zero-padded to 2nx x 2ny is shared among
+ *     the processes with the grid, each holding the padded rows of its own rows).
  *   - Generators give the same global surface for any number of processes, to the bit:
  *     asp_topography_self_affine draws each wavevector's noise from a stream keyed by the
  *     seed and the wavevector.

@@ -138,6 +138,25 @@ void PaddedRealFft::backward(Complex *spectrum, double *box, double *rows) const
     std::copy(rows + width * j, rows + width * j + nx_, box + nx_ * j);
 }
 
+void PaddedRealFft::surface_forward(const double *surface, Complex *spectrum) const {
+  // All 2ny rows along x: the plan's ny rows twice (at offsets that keep the alignment it was
+  // made for), then the columns.
+  const std::int64_t width = 2 * nx_, columns = nx_ + 1;
+  auto *s = reinterpret_cast<fftw_complex *>(spectrum);
+  auto *rows = const_cast<double *>(surface);  // an out-of-place r2c preserves its input
+  fftw_execute_dft_r2c(static_cast<fftw_plan>(rows_r2c_), rows, s);
+  fftw_execute_dft_r2c(static_cast<fftw_plan>(rows_r2c_), rows + width * ny_, s + columns * ny_);
+  fftw_execute_dft(static_cast<fftw_plan>(columns_forward_), s, s);
+}
+
+void PaddedRealFft::surface_backward(Complex *spectrum, double *surface) const {
+  const std::int64_t width = 2 * nx_, columns = nx_ + 1;
+  auto *s = reinterpret_cast<fftw_complex *>(spectrum);
+  fftw_execute_dft(static_cast<fftw_plan>(columns_backward_), s, s);
+  fftw_execute_dft_c2r(static_cast<fftw_plan>(rows_c2r_), s, surface);
+  fftw_execute_dft_c2r(static_cast<fftw_plan>(rows_c2r_), s + columns * ny_, surface + width * ny_);
+}
+
 HalfComplexFft::HalfComplexFft(std::int64_t nx, std::int64_t ny, FftPlanning planning,
                                int threads) {
   int dims[2];

@@ -45,22 +45,42 @@ class RealFft final : public RealTransform {
 };
 
 // The transform of a 2D field of nx x ny, taken as zero outside its box, on the grid
-// zero-padded to 2nx x 2ny, and back, keeping only the box: RealFft(2nx, 2ny) without the
-// work its zero rows need. Forward: the ny rows of the box along x, then every column along y
-// (the rows beyond the box, zero, need no transform along x); backward the reverse, and along
-// x only the rows of the box. The spectrum is laid out as RealFft(2nx, 2ny)'s,
-// S[kx + (nx+1)*ky]; rows is a work field of at least 2nx*ny doubles (as every field, from the
-// library's allocator). No transform is normalised: backward(forward(f)) = 4 nx ny f.
-class PaddedRealFft {
+// zero-padded to 2nx x 2ny, and back, keeping only the box (a free substrate's transforms);
+// and the transform of a field over the whole padded grid (its surface) and back. On this
+// process's rows: `box` holds its rows of the box, nx values each; the padded surface its
+// padded rows, 2nx values each, first those of its box rows, then the rows ny further down.
+// Serial (PaddedRealFft) or distributed over processes (core/mpi_partition.cpp). The spectrum
+// is laid out as Grid::padded_spectrum() says. No transform is normalised: backward(forward(f))
+// = 4 nx ny f.
+class PaddedTransform {
+ public:
+  virtual ~PaddedTransform() = default;
+  // rows: work for 2nx values per padded row of this process (4 nx local_rows), from the
+  // library's allocator.
+  virtual void forward(const double *box, Complex *spectrum, double *rows) const = 0;
+  // Destroys the spectrum it reads.
+  virtual void backward(Complex *spectrum, double *box, double *rows) const = 0;
+  virtual void surface_forward(const double *surface, Complex *spectrum) const = 0;
+  // Destroys the spectrum it reads.
+  virtual void surface_backward(Complex *spectrum, double *surface) const = 0;
+};
+
+// The whole padded grid in this process: RealFft(2nx, 2ny) without the work its zero rows
+// need. Forward: the ny rows of the box along x, then every column along y (the rows beyond
+// the box, zero, need no transform along x); backward the reverse, and along x only the rows
+// of the box. The surface's transforms take all 2ny rows along x. The spectrum is laid out as
+// RealFft(2nx, 2ny)'s, S[kx + (nx+1)*ky].
+class PaddedRealFft final : public PaddedTransform {
  public:
   PaddedRealFft(std::int64_t nx, std::int64_t ny, FftPlanning planning, int threads = 1);
-  ~PaddedRealFft();
+  ~PaddedRealFft() override;
   PaddedRealFft(const PaddedRealFft &) = delete;
   PaddedRealFft &operator=(const PaddedRealFft &) = delete;
 
-  void forward(const double *box, Complex *spectrum, double *rows) const;
-  // Destroys the spectrum it reads.
-  void backward(Complex *spectrum, double *box, double *rows) const;
+  void forward(const double *box, Complex *spectrum, double *rows) const override;
+  void backward(Complex *spectrum, double *box, double *rows) const override;
+  void surface_forward(const double *surface, Complex *spectrum) const override;
+  void surface_backward(Complex *spectrum, double *surface) const override;
 
  private:
   std::int64_t nx_, ny_;

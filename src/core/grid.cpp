@@ -94,6 +94,9 @@ std::shared_ptr<Grid> Grid::create_distributed(std::shared_ptr<const Partition> 
   grid->row_offset_ = slab.offset;
   grid->spectral_columns_ = slab.columns;
   grid->column_offset_ = slab.column_offset;
+  const Slab padded = partition->slab(2 * nx, 2 * ny);
+  grid->padded_columns_ = padded.columns;
+  grid->padded_column_offset_ = padded.column_offset;
   grid->partition_ = std::move(partition);
   return grid;
 }
@@ -142,7 +145,7 @@ const RealTransform &Grid::fft() const {
 }
 
 const RealFft &Grid::real_fft(std::int64_t nx, std::int64_t ny) const {
-  require_serial("the transform of another shape (a free substrate's padded grid)");
+  require_serial("the transform of another shape");
   std::lock_guard<std::mutex> lock(plans_mutex_);
   const auto key = std::make_tuple(nx, ny);
   auto found = real_plans_.find(key);
@@ -158,11 +161,22 @@ const HalfComplexFft &Grid::half_complex_fft() const {
   return *half_complex_plan_;
 }
 
-const PaddedRealFft &Grid::padded_fft() const {
-  require_serial("the padded transform of a free substrate");
+const PaddedTransform &Grid::padded_fft() const {
   std::lock_guard<std::mutex> lock(plans_mutex_);
-  if (!padded_plan_) padded_plan_.reset(new PaddedRealFft(nx_, ny_, planning_, threads_));
+  if (!padded_plan_) {
+    if (partition_)
+      padded_plan_ = partition_->padded_transform(nx_, ny_, planning_, threads_);
+    else
+      padded_plan_.reset(new PaddedRealFft(nx_, ny_, planning_, threads_));
+  }
   return *padded_plan_;
+}
+
+SpectralLayout Grid::padded_spectrum() const {
+  if (partition_)
+    return SpectralLayout(Packing::transposed_half_spectrum, 2 * nx_, 2 * ny_, 2.0 * lx_,
+                          2.0 * ly_, padded_columns_, padded_column_offset_);
+  return SpectralLayout(Packing::half_spectrum, 2 * nx_, 2 * ny_, 2.0 * lx_, 2.0 * ly_);
 }
 
 void Grid::set_fft_planning(FftPlanning planning) {

@@ -70,14 +70,17 @@ class Grid {
   Spectrum make_spectrum() const { return Spectrum(static_cast<std::size_t>(local_spectral())); }
 
   // Plans, made on first use under the planner lock and kept for the grid's life, one per
-  // (shape, kind): the grid's own shape (distributed with the grid), or another one such as
-  // the padded 2nx x 2ny of a non-periodic substrate (serial grids only: those throw
-  // Error(unsupported) on a distributed grid).
+  // (shape, kind): the grid's own shape and the padded one below (distributed with the
+  // grid), or another one (serial grids only: those throw Error(unsupported) on a
+  // distributed grid).
   const RealTransform &fft() const;
   const RealFft &real_fft(std::int64_t nx, std::int64_t ny) const;
   const HalfComplexFft &half_complex_fft() const;
-  // The grid's box on the grid zero-padded to 2nx x 2ny (2D grids).
-  const PaddedRealFft &padded_fft() const;
+  // The grid's box on the grid zero-padded to 2nx x 2ny (2D grids; distributed with the
+  // grid), and the layout of its spectrum: the half spectrum of the padded grid, by rows on a
+  // serial grid, on a distributed one this process's columns kx of it, transposed.
+  const PaddedTransform &padded_fft() const;
+  SpectralLayout padded_spectrum() const;
   void set_fft_planning(FftPlanning planning);
   FftPlanning fft_planning() const;
   // The threads of the grid's FFTs and of the loops of solves on it (default_threads() at
@@ -102,12 +105,13 @@ class Grid {
   int threads_;
   std::int64_t local_rows_, row_offset_ = 0;
   std::int64_t spectral_columns_ = 0, column_offset_ = 0;  // of a distributed grid
+  std::int64_t padded_columns_ = 0, padded_column_offset_ = 0;
   std::shared_ptr<const Partition> partition_;
   mutable std::mutex plans_mutex_;
   mutable std::unique_ptr<RealTransform> distributed_plan_;
   mutable std::map<std::tuple<std::int64_t, std::int64_t>, std::unique_ptr<RealFft>> real_plans_;
   mutable std::unique_ptr<HalfComplexFft> half_complex_plan_;
-  mutable std::unique_ptr<PaddedRealFft> padded_plan_;
+  mutable std::unique_ptr<PaddedTransform> padded_plan_;
   LocalReductions reductions_;
 };
 

@@ -39,6 +39,17 @@ class Partition : public Reductions {
   virtual std::unique_ptr<RealTransform> real_transform(std::int64_t nx, std::int64_t ny,
                                                         FftPlanning planning,
                                                         int threads) const = 0;
+  // The transform of the grid's box zero-padded to 2nx x 2ny (a free substrate's), from this
+  // process's rows of the box (or of the padded surface) to its columns of the padded half
+  // spectrum, the columns of slab(2nx, 2ny), and back (PaddedTransform). Collective.
+  virtual std::unique_ptr<PaddedTransform> padded_transform(std::int64_t nx, std::int64_t ny,
+                                                            FftPlanning planning,
+                                                            int threads) const = 0;
+  // Collective: the row just below this process's slab of a grid of nx x ny, row offset +
+  // rows, from the process that holds it, into row[0..nx); left alone when the slab is empty
+  // or ends the grid. For differences between neighbouring rows across slabs.
+  virtual void next_row(const double *field, std::int64_t nx, std::int64_t ny,
+                        double *row) const = 0;
   // Collective: each process says whether its part of a call failed (failure is null if
   // not). If any did, every process throws the Error of the lowest failing rank, its
   // message prefixed with that rank; otherwise it returns.

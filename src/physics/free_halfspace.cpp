@@ -41,8 +41,7 @@ FreeHalfSpace::FreeHalfSpace(const Grid &grid, double contact_modulus)
       ny_(grid.ny()),
       padded_nx_(2 * grid.nx()),
       padded_ny_(2 * grid.ny()),
-      layout_(Packing::half_spectrum, 2 * grid.nx(), 2 * grid.ny(), 2.0 * grid.lx(),
-              2.0 * grid.ly()),
+      layout_(grid.padded_spectrum()),
       modulus_(contact_modulus) {
   if (grid.dimension() != 2)
     throw Error(Status::unsupported,
@@ -51,10 +50,6 @@ FreeHalfSpace::FreeHalfSpace(const Grid &grid, double contact_modulus)
                 "the logarithm of the distance and is defined only relative to a reference "
                 "point, so a 1D free substrate has no unique force-penetration relation; use a "
                 "periodic system in 1D");
-  if (grid.partition() != nullptr)
-    throw Error(Status::unsupported,
-                "argument 'grid' is distributed over processes: the free (non-periodic) "
-                "half-space is not; use a periodic system, or a grid of one process");
   require_positive(contact_modulus, "contact_modulus");
 
   // The largest coefficient (a pixel on itself), the smallest (the farthest offset of the
@@ -78,7 +73,7 @@ FreeHalfSpace::FreeHalfSpace(const Grid &grid, double contact_modulus)
                     "units");
   // The padded work field, before anything is planned or transformed: a box too large for
   // memory fails here, when the system is made.
-  padded_ = Field(static_cast<std::size_t>(padded_nx_ * padded_ny_), 0.0);
+  padded_ = Field(static_cast<std::size_t>(4 * grid.local_pixels()), 0.0);
 }
 
 Spectrum FreeHalfSpace::make_spectrum() const {
@@ -95,30 +90,30 @@ void FreeHalfSpace::backward(Complex *spectrum, double *field) const {
 }
 
 void FreeHalfSpace::surface_forward(const double *surface_field, Complex *spectrum) const {
-  // Box rows, then the rest of those rows, then the rows below, into the padded layout.
+  // Box rows, then the rest of those rows, then the rows below, into the padded rows.
   double *pad = padded_.data();
-  const std::int64_t width = padded_nx_, box = nx_ * ny_;
+  const std::int64_t width = padded_nx_, rows = grid_.local_rows(), box = nx_ * rows;
   const double *beside = surface_field + box;
   const double *below = beside + box;
-  for (std::int64_t j = 0; j < ny_; ++j) {
+  for (std::int64_t j = 0; j < rows; ++j) {
     std::copy(surface_field + nx_ * j, surface_field + nx_ * (j + 1), pad + width * j);
     std::copy(beside + nx_ * j, beside + nx_ * (j + 1), pad + width * j + nx_);
   }
-  std::copy(below, below + width * ny_, pad + width * ny_);
-  grid_.real_fft(padded_nx_, padded_ny_).forward(pad, spectrum);
+  std::copy(below, below + width * rows, pad + width * rows);
+  grid_.padded_fft().surface_forward(pad, spectrum);
 }
 
 void FreeHalfSpace::surface_backward(Complex *spectrum, double *surface_field) const {
   double *pad = padded_.data();
-  grid_.real_fft(padded_nx_, padded_ny_).backward(spectrum, pad);
-  const std::int64_t width = padded_nx_, box = nx_ * ny_;
+  grid_.padded_fft().surface_backward(spectrum, pad);
+  const std::int64_t width = padded_nx_, rows = grid_.local_rows(), box = nx_ * rows;
   double *beside = surface_field + box;
   double *below = beside + box;
-  for (std::int64_t j = 0; j < ny_; ++j) {
+  for (std::int64_t j = 0; j < rows; ++j) {
     std::copy(pad + width * j, pad + width * j + nx_, surface_field + nx_ * j);
     std::copy(pad + width * j + nx_, pad + width * (j + 1), beside + nx_ * j);
   }
-  std::copy(pad + width * ny_, pad + width * padded_ny_, below);
+  std::copy(pad + width * rows, pad + width * 2 * rows, below);
 }
 
 void FreeHalfSpace::make_kernel() const {
@@ -126,7 +121,8 @@ void FreeHalfSpace::make_kernel() const {
   // corners at a time: row l holds F((k + 1/2) dx, (l + 1/2) dy) for k in [0, nx], and
   // F(-x, y) = F(x, -y) = -F(x, y) gives the corners at -1/2. The kernel is even in each
   // axis; offset i sits at index i and 2nx - i of the padded grid (the offset nx, which no
-  // two pixels of the box have, at nx), so that its spectrum is real.
+  // two pixels of the box have, at nx), so that its spectrum is real. This process fills its
+  // padded rows: those of its box rows J (offset J) and the rows ny + J (offset ny - J).
   const double dx = grid_.lx() / static_cast<double>(nx_);
   const double aspect = (grid_.ly() / static_cast<double>(ny_)) / dx;
   const double factor = dx / (pi * modulus_);
@@ -142,52 +138,69 @@ void FreeHalfSpace::make_kernel() const {
       left = right;
     }
   };
-  differences(0, above);
-  for (std::size_t k = 0; k < columns; ++k) below[k] = -above[k];
-
-  // The mean displacement of a unit pressure on the box: sum over offsets of C times the
-  // number of pixel pairs at that offset, (nx - |i|)(ny - |j|), over N.
   double *pad = padded_.data();
-  double displacement_sum = 0.0;
-  for (std::int64_t j = 0; j <= ny_; ++j) {
-    if (j > 0) {
-      std::swap(below, above);
-      differences(j, above);
+  const std::int64_t rows = grid_.local_rows(), first = grid_.row_offset();
+  // The kernel rows of offsets first_offset, first_offset + 1, ... (count of them), each
+  // into padded row row_of(offset); returns the sum over them of the offset's pixel pairs
+  // times C, for the mean displacement of a unit pressure on the box: the sum over offsets of
+  // C times the number of pixel pairs at that offset, (nx - |i|)(ny - |j|), over N.
+  const auto fill = [&](std::int64_t first_offset, std::int64_t count, auto row_of) {
+    double pairs_sum = 0.0;
+    if (count == 0) return pairs_sum;
+    differences(first_offset, above);
+    if (first_offset == 0)
+      for (std::size_t k = 0; k < columns; ++k) below[k] = -above[k];
+    else
+      differences(first_offset - 1, below);
+    for (std::int64_t j = first_offset; j < first_offset + count; ++j) {
+      if (j > first_offset) {
+        std::swap(below, above);
+        differences(j, above);
+      }
+      double *row = pad + padded_nx_ * row_of(j);
+      const double pairs_y = j == ny_ ? 0.0 : (j == 0 ? 1.0 : 2.0) * static_cast<double>(ny_ - j);
+      double row_sum = 0.0;
+      for (std::int64_t i = 0; i <= nx_; ++i) {
+        const double c = factor * (above[static_cast<std::size_t>(i)] -
+                                   below[static_cast<std::size_t>(i)]);
+        row[i] = c;
+        row[(padded_nx_ - i) % padded_nx_] = c;
+        const double pairs_x =
+            i == nx_ ? 0.0 : (i == 0 ? 1.0 : 2.0) * static_cast<double>(nx_ - i);
+        row_sum += pairs_x * c;
+      }
+      pairs_sum += pairs_y * row_sum;
     }
-    const std::int64_t rows[2] = {j, (padded_ny_ - j) % padded_ny_};
-    const double pairs_y = j == ny_ ? 0.0 : (j == 0 ? 1.0 : 2.0) * static_cast<double>(ny_ - j);
-    double row_sum = 0.0;
-    for (std::int64_t i = 0; i <= nx_; ++i) {
-      const double c = factor * (above[static_cast<std::size_t>(i)] -
-                                 below[static_cast<std::size_t>(i)]);
-      const std::int64_t column[2] = {i, (padded_nx_ - i) % padded_nx_};
-      for (std::int64_t r : rows)
-        for (std::int64_t s : column) pad[s + padded_nx_ * r] = c;
-      const double pairs_x =
-          i == nx_ ? 0.0 : (i == 0 ? 1.0 : 2.0) * static_cast<double>(nx_ - i);
-      row_sum += pairs_x * c;
-    }
-    displacement_sum += pairs_y * row_sum;
-  }
+    return pairs_sum;
+  };
+  // Box rows J: offsets J, local row J - first. The rows ny + J: offsets ny - J, from
+  // ny - (first + rows - 1) up to ny - first, local row rows + J - first (their pairs are
+  // those of the box rows of the same offset, counted there).
+  double displacement_sum =
+      fill(first, rows, [&](std::int64_t offset) { return offset - first; });
+  fill(ny_ - (first + rows - 1), rows,
+       [&](std::int64_t offset) { return rows + (ny_ - offset) - first; });
+  grid_.reductions().combine_sums(&displacement_sum, 1);
   const double n = static_cast<double>(grid_.n_pixels());
   const double mean_displacement = displacement_sum / n;
 
   Spectrum s = make_spectrum();
-  grid_.real_fft(padded_nx_, padded_ny_).forward(pad, s.data());
+  grid_.padded_fft().surface_forward(pad, s.data());
   Field c(static_cast<std::size_t>(layout_.size()));
   const double inverse_points = 1.0 / transform_points();
   loops::for_each(layout_.size(), [&](std::int64_t k) { c[k] = s[k].real() * inverse_points; });
   compliance_ = std::move(c);
   uniform_pressure_stiffness_ = 1.0 / mean_displacement;
+  kernel_made_ = true;
 }
 
 const Field &FreeHalfSpace::normalised_compliance() const {
-  if (compliance_.empty()) make_kernel();
+  if (!kernel_made_) make_kernel();
   return compliance_;
 }
 
 const Field &FreeHalfSpace::normalised_stiffness() const {
-  if (stiffness_.empty()) {
+  if (!stiffness_made_) {
     // 1/C~ with the 1/N of the transform: 1/(N^2 c) for the normalised compliance c = C~/N.
     // The padded kernel's spectrum is positive (it is that of 1/r smoothed over a pixel,
     // wrapped), which the constructor of a primal formulation relies on; checked here.
@@ -199,17 +212,21 @@ const Field &FreeHalfSpace::normalised_stiffness() const {
       s[k] = 1.0 / (n * n * c[k]);
       positive = positive && c[k] > 0.0 && std::isfinite(s[k]);
     }
-    if (!positive)
+    // Every process learns whether any entry failed, so that all throw together.
+    double failed = positive ? 0.0 : 1.0;
+    grid_.reductions().combine_maxima(&failed, 1);
+    if (failed != 0.0)
       throw Error(Status::internal,
                   "the padded compliance of this free half-space has a spectral entry that is "
                   "not positive, or whose inverse is not finite; its stiffness does not exist");
     stiffness_ = std::move(s);
+    stiffness_made_ = true;
   }
   return stiffness_;
 }
 
 double FreeHalfSpace::uniform_pressure_stiffness() const {
-  if (compliance_.empty()) make_kernel();
+  if (!kernel_made_) make_kernel();
   return uniform_pressure_stiffness_;
 }
 
@@ -240,7 +257,7 @@ double FreeHalfSpace::elastic_energy_of_pressure(const double *pressure) const {
   // (a/2) sum p.C p = (a/2) sum over the padded spectrum of C~|P|^2 (Parseval; the padded
   // pressure is zero outside the box). The pressure is divided by its largest magnitude
   // first, so that squares cannot overflow for any representable field.
-  const std::int64_t n = grid_.n_pixels();
+  const std::int64_t n = grid_.local_pixels();
   const double largest = loops::maximum(grid_.reductions(), n,
                                         [&](std::int64_t i) { return std::fabs(pressure[i]); });
   if (!(largest > 0.0)) return 0.0;

@@ -30,6 +30,9 @@
 // The elastic energy is (a/2) sum p.C p over the box, all of it: there is no q = 0 term to
 // report apart.
 //
+// On a distributed grid each process holds the padded rows of its box rows and the rows ny
+// further down, and its columns of the padded spectrum (Grid::padded_fft).
+//
 // Memory: a padded work field (4 nx ny doubles, 32 bytes per pixel of the box), and on first
 // use the compliance ((nx + 1) 2ny doubles, 16 bytes per pixel); each spectrum from
 // make_spectrum holds (nx + 1) 2ny complex numbers, 32 bytes per pixel; the stiffness, made
@@ -59,8 +62,9 @@ class FreeHalfSpace final : public Substrate {
     return static_cast<double>(padded_nx_) * static_cast<double>(padded_ny_);
   }
   // The padded grid: the box's pixels, then the rest of the padded rows next to the box
-  // (nx per row), then the padded rows below it (2nx per row).
-  std::int64_t surface_size() const override { return padded_nx_ * padded_ny_; }
+  // (nx per row), then the padded rows below it (2nx per row). On a distributed grid, this
+  // process's part: its box rows J and the padded rows ny + J.
+  std::int64_t surface_size() const override { return 4 * grid_.local_pixels(); }
   void surface_forward(const double *surface_field, Complex *spectrum) const override;
   void surface_backward(Complex *spectrum, double *surface_field) const override;
 
@@ -92,12 +96,15 @@ class FreeHalfSpace final : public Substrate {
   SpectralLayout layout_;
   double modulus_;
   double pixel_stiffness_ = 0.0;
-  // Work for the transforms: the padded surface (its first ny rows for the box's transforms,
-  // all of it for the surface's and the kernel's).
+  // Work for the transforms: this process's padded rows (the first half for the box's
+  // transforms, all of them for the surface's and the kernel's).
   mutable Field padded_;
   mutable Field compliance_;
   mutable Field stiffness_;
   mutable double uniform_pressure_stiffness_ = 0.0;
+  // Whether they are made: flags, not the fields' sizes, since a process of a distributed
+  // grid may hold no spectral entry, and the making is collective.
+  mutable bool kernel_made_ = false, stiffness_made_ = false;
 };
 
 }  // namespace asp

@@ -41,6 +41,9 @@ class Substrate {
   // A primal formulation's displacement lives there, so that the pressure can vanish outside
   // the box. Transforms as above, between such fields and the same spectral space.
   virtual std::int64_t surface_size() const = 0;
+  // Whether that surface reaches beyond the grid (a free substrate's does): the same on every
+  // process of a distributed grid, also on one whose part of the surface is empty.
+  bool surface_beyond_grid() const { return kind() == SubstrateKind::free; }
   virtual void surface_forward(const double *surface_field, Complex *spectrum) const = 0;
   virtual void surface_backward(Complex *spectrum, double *surface_field) const = 0;
 

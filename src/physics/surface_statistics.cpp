@@ -128,20 +128,26 @@ SurfaceStatistics surface_statistics(const Grid &grid, const double *heights) {
 double rms_slope_within_box(const Grid &grid, const double *heights) {
   // Differences divided by 2^e (e above the largest height) are at most 2 in magnitude, so
   // their squares cannot overflow; the scale comes back exactly in ldexp.
-  if (grid.partition() != nullptr)
-    throw Error(Status::unsupported,
-                "argument 'grid' is distributed over processes: the rms slope within the box "
-                "(of a free substrate's heights) needs neighbouring rows on one process");
-  const std::int64_t nx = grid.nx(), ny = grid.ny(), n = grid.n_pixels();
+  const std::int64_t nx = grid.nx(), ny = grid.ny(), n = grid.local_pixels();
+  const std::int64_t rows = grid.local_rows();
   const int exponent = exponent_above(
       loops::maximum(grid.reductions(), n, [&](std::int64_t i) { return std::fabs(heights[i]); }));
   const double factor = std::ldexp(1.0, -exponent);
+  // The row after this process's last one, where another process holds it.
+  std::vector<double> next;
+  const bool has_next = rows > 0 && grid.row_offset() + rows < ny;
+  if (grid.partition() != nullptr) {
+    next.resize(static_cast<std::size_t>(nx));
+    grid.partition()->next_row(heights, nx, ny, next.data());
+  }
+  const double *below_last = has_next && !next.empty() ? next.data() : heights + n;
   // Sums of squared differences along x and along y, each over the pairs inside the box.
   const auto sums = loops::sums<2>(grid.reductions(), n, [&](std::int64_t k, double *sum) {
     const std::int64_t i = k % nx, j = k / nx;
     const double here = heights[k] * factor;
     const double along_x = i + 1 < nx ? heights[k + 1] * factor - here : 0.0;
-    const double along_y = j + 1 < ny ? heights[k + nx] * factor - here : 0.0;
+    const double below = j + 1 < rows ? heights[k + nx] : (has_next ? below_last[i] : 0.0);
+    const double along_y = j + 1 < rows || has_next ? below * factor - here : 0.0;
     sum[0] += along_x * along_x;
     sum[1] += along_y * along_y;
   });

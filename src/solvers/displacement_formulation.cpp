@@ -15,7 +15,7 @@ DisplacementFormulation::DisplacementFormulation(System &system, Control control
   spectrum_ = substrate_.make_spectrum();
   double *u = displacement_.data();
   starting_displacement(u);
-  if (unknowns_ > n_) {
+  if (substrate_.surface_beyond_grid()) {
     // Outside the box, the displacement that the state's pressure makes there.
     Field surface(static_cast<std::size_t>(unknowns_));
     substrate_.forward(state_.pressure.data(), spectrum_.data());

@@ -16,7 +16,7 @@ PrimalFormulation::PrimalFormulation(System &system, Control control, double val
       stiffness_(system.substrate().normalised_stiffness()),
       local_term_(adhesion_) {
   unknowns_ = substrate_.surface_size();
-  if (control == Control::mean_gap && unknowns_ > n_)
+  if (control == Control::mean_gap && substrate_.surface_beyond_grid())
     throw Error(Status::unsupported,
                 "mean-gap control of the gap formulation is offered on a periodic half-space "
                 "only: on a " + std::string(substrate_name(substrate_.kind())) +
@@ -35,14 +35,14 @@ PrimalFormulation::PrimalFormulation(System &system, Control control, double val
   }
   displacement_ = Field(static_cast<std::size_t>(unknowns_));
   spectrum_ = substrate_.make_spectrum();
-  if (unknowns_ > n_) {
+  if (substrate_.surface_beyond_grid()) {
     surface_unknowns_ = Field(static_cast<std::size_t>(unknowns_));
     surface_pressure_ = Field(static_cast<std::size_t>(unknowns_));
   }
 
   // The stored gap as the starting iterate, in units of P/k; on a surface beyond the grid,
   // the displacement there that the stored pressure makes.
-  if (unknowns_ > n_) {
+  if (substrate_.surface_beyond_grid()) {
     substrate_.forward(state_.pressure.data(), spectrum_.data());
     Complex *s = spectrum_.data();
     const double *c = substrate_.normalised_compliance().data();
@@ -108,6 +108,14 @@ void PrimalFormulation::elastic_pressure(const double *x, double *out) {
   apply_stiffness(u, out);
 }
 
+double PrimalFormulation::energy_beyond_grid(const double *u, const double *pressure) const {
+  // The displacement beyond the grid (a free substrate's padded surface) has only elastic
+  // energy. (A sum on every process, also one whose part of that surface is empty.)
+  if (!substrate_.surface_beyond_grid()) return 0.0;
+  return 0.5 * loops::sum(grid_.reductions(), unknowns_ - n_,
+                          [&](std::int64_t i) { return u[n_ + i] * pressure[n_ + i]; });
+}
+
 double PrimalFormulation::value_and_gradient(const double *x, double *gradient) {
   // E = (1/2) u.p (+ sum_i phi(x_i) with adhesion), gradient p (+ phi'(x)), all scaled.
   if (potential_ != nullptr) return value_and_gradient_of_potential(x, gradient);
@@ -115,13 +123,7 @@ double PrimalFormulation::value_and_gradient(const double *x, double *gradient) 
   elastic_pressure(x, gradient);
   counters_.evaluations += 1;
   const double *u = displacement_.data();
-  // The displacement beyond the grid (a free substrate's padded surface) has only elastic
-  // energy.
-  const double beyond =
-      unknowns_ > n_ ? 0.5 * loops::sum(grid_.reductions(), unknowns_ - n_, [&](std::int64_t i) {
-        return u[n_ + i] * gradient[n_ + i];
-      })
-                     : 0.0;
+  const double beyond = energy_beyond_grid(u, gradient);
   // One pass adds the interaction's pressure to the gradient and sums both energies.
   const ExponentialPotential phi = adhesion_;
   return beyond + loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
@@ -139,11 +141,7 @@ double PrimalFormulation::value_and_gradient_of_potential(const double *x, doubl
   counters_.evaluations += 1;
   potential_->evaluate(n_, x, phi_.data(), dphi_.data(), nullptr);
   const double *u = displacement_.data(), *phi = phi_.data(), *dphi = dphi_.data();
-  const double beyond =
-      unknowns_ > n_ ? 0.5 * loops::sum(grid_.reductions(), unknowns_ - n_, [&](std::int64_t i) {
-        return u[n_ + i] * gradient[n_ + i];
-      })
-                     : 0.0;
+  const double beyond = energy_beyond_grid(u, gradient);
   return beyond + loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
     const double elastic = 0.5 * u[i] * gradient[i];
     gradient[i] += dphi[i];
@@ -246,7 +244,7 @@ bool PrimalFormulation::finish() {
   // The elastic pressure of the iterate, p = K u (scaled), into the state's pressure array
   // (on a surface beyond the grid, the grid's part of it; beyond, it is the residual).
   double *p = state_.pressure.data();
-  if (unknowns_ > n_) {
+  if (substrate_.surface_beyond_grid()) {
     elastic_pressure(surface_unknowns_.data(), surface_pressure_.data());
     std::copy(surface_pressure_.data(), surface_pressure_.data() + n_, p);
     std::copy(surface_unknowns_.data(), surface_unknowns_.data() + n_, state_.gap.data());

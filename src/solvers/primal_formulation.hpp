@@ -44,7 +44,9 @@ class PrimalFormulation final : public ScaledFormulation {
 
   // The gap on the grid; on a free substrate followed by the displacement of the padded
   // surface outside the box, unknowns free of the bound.
-  Field &variable() override { return unknowns_ > n_ ? surface_unknowns_ : state_.gap; }
+  Field &variable() override {
+    return substrate_.surface_beyond_grid() ? surface_unknowns_ : state_.gap;
+  }
   std::int64_t bounded_size() const override { return n_; }
   bool quadratic() const override { return !adhesive_ && potential_ == nullptr; }
   double value_and_gradient(const double *x, double *gradient) override;
@@ -80,6 +82,8 @@ class PrimalFormulation final : public ScaledFormulation {
   void elastic_pressure(const double *x, double *out);
   // value_and_gradient with a user's potential and the hard wall.
   double value_and_gradient_of_potential(const double *x, double *gradient);
+  // (1/2) u.p over the surface beyond the grid; 0 without one.
+  double energy_beyond_grid(const double *u, const double *pressure) const;
   // phi'(g) of the interaction at the gaps (clipped at the wall) into slope; returns phi'(0).
   double interaction_slopes(const double *gap, double *slope);
 

@@ -6,7 +6,7 @@
 //     count, on even and odd grids, on a grid with fewer rows than processes and on one with
 //     fewer spectral columns (which the processes hold of the transposed spectrum);
 //   - solvers: every algorithm, on a rough non-adhesive and a rough adhesive scene, on an even
-//     and an odd grid, gives the serial pressure and gap to 1e-10 of their largest magnitude,
+//     and an odd grid, on the periodic and (where it takes it) the free substrate, gives the serial pressure and gap to 1e-10 of their largest magnitude,
 //     and the serial scalars to 1e-10 relative. The processes' sums are added in a different
 //     order than the serial ones and FFTW-MPI rounds differently from serial FFTW: rounding
 //     differences of 1e-16 that a solve to 1e-11 amplifies by far less than 1e6;
@@ -158,6 +158,7 @@ struct Case {
   const char *variable;
   Wall wall;
   int control;
+  bool free_substrate = false;  // the free (non-periodic) half-space instead of the periodic
 };
 
 struct Outcome {
@@ -172,7 +173,10 @@ Outcome solve(asp_grid *grid, int64_t count, const std::vector<double> &heights,
   Outcome out;
   asp_system *system = nullptr;
   asp_solver *solver = nullptr;
-  require_ok(asp_system_create(grid, 1.0, &system), "asp_system_create");
+  if (c.free_substrate)
+    require_ok(asp_system_create_free(grid, 1.0, &system), "asp_system_create_free");
+  else
+    require_ok(asp_system_create(grid, 1.0, &system), "asp_system_create");
   std::vector<double> h = heights;
   require_ok(asp_system_set_topography(system, data_or_null(h), count), "set_topography");
   if (c.wall == Wall::adhesive) require_ok(asp_system_set_adhesion(system, 0.02, 0.3), "adhesion");
@@ -222,7 +226,7 @@ void solver_gives_the_serial_result(const Case &c, int64_t nx, int64_t ny) {
                            (c.wall == Wall::hard       ? " hard"
                             : c.wall == Wall::adhesive ? " adhesive"
                                                        : " soft") +
-                           " " + std::to_string(nx) + "x" + std::to_string(ny);
+                           (c.free_substrate ? " free" : "") + " " + std::to_string(nx) + "x" + std::to_string(ny);
   const std::vector<double> whole = rough(g.serial, nx * ny, 7);
   const double range =
       *std::max_element(whole.begin(), whole.end()) - *std::min_element(whole.begin(), whole.end());
@@ -357,13 +361,6 @@ void bad_input_on_one_process_fails_on_all() {
     asp_grid_destroy(planned);
   }
 
-  // The free substrate is not distributed.
-  asp_system *free_system = nullptr;
-  const int free_status = asp_system_create_free(g.distributed, 1.0, &free_system);
-  if (free_status != ASP_ERR_UNSUPPORTED)
-    fail("a free system on a distributed grid was not refused");
-  asp_system_destroy(free_system);
-
   // A callback that fails on one process fails the solve on all.
   asp_solver *solver = nullptr;
   require_ok(asp_solver_create("lbfgs", &solver), "solver");
@@ -426,6 +423,30 @@ int main(int argc, char **argv) {
   // One row: every process but one holds none, and the gap's unknowns are only its pixels.
   solver_gives_the_serial_result(cases[5], 64, 1);
   solver_gives_the_serial_result(cases[10], 64, 1);
+
+  // The free (non-periodic) substrate: its padded grid is distributed too. Every solver that
+  // takes it (not lbfgs_fourier, gfmd and fire_mass_weighted, whose Fourier masses and
+  // preconditioner need a periodic one), on an even and an odd grid, on one with fewer rows
+  // than three processes, and on grids with few spectral columns.
+  const Case free_cases[] = {
+      {"pk", "", Wall::hard, ASP_CONTROL_MEAN_PRESSURE, true},
+      {"bugnicourt", "pressure", Wall::hard, ASP_CONTROL_MEAN_PRESSURE, true},
+      {"bugnicourt", "gap", Wall::adhesive, ASP_CONTROL_PENETRATION, true},
+      {"lbfgsb", "pressure", Wall::hard, ASP_CONTROL_PENETRATION, true},
+      {"lbfgsb", "gap", Wall::adhesive, ASP_CONTROL_PENETRATION, true},
+      {"lbfgs", "", Wall::soft, ASP_CONTROL_PENETRATION, true},
+      {"fire", "", Wall::soft, ASP_CONTROL_PENETRATION, true},
+  };
+  for (const Case &c : free_cases) {
+    solver_gives_the_serial_result(c, 32, 32);
+    solver_gives_the_serial_result(c, 27, 19);
+  }
+  solver_gives_the_serial_result(free_cases[0], 16, 2);
+  solver_gives_the_serial_result(free_cases[4], 16, 2);
+  solver_gives_the_serial_result(free_cases[5], 16, 2);
+  // Fewer spectral columns of the padded grid (nx + 1) than three processes hold, and as many.
+  solver_gives_the_serial_result(free_cases[0], 1, 24);
+  solver_gives_the_serial_result(free_cases[2], 2, 45);
 
   int total = failures;
   MPI_Allreduce(MPI_IN_PLACE, &total, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);

@@ -7,7 +7,7 @@ distributed grid are collective):
     mpirun -np 2 python3 test_mpi.py
 
 Each process compares its rows with a serial grid of its own: the self-affine surface to the
-bit, the solution of a pk solve to 1e-10 (FFTW-MPI's transforms round differently from the
+bit, the solution of a pk solve on the periodic and the free substrate to 1e-10 (FFTW-MPI's transforms round differently from the
 serial ones), the shapes of the arrays going in and out. A failure on any process fails the
 run on every process.
 """
@@ -82,10 +82,15 @@ class DistributedGrid(unittest.TestCase):
                 system.set_topography(np.zeros((NY, NX)))
 
     def test_a_pk_solve_gives_the_serial_solution(self):
+        for substrate in ("periodic", "free"):
+            with self.subTest(substrate=substrate):
+                self.check_pk_solve(substrate)
+
+    def check_pk_solve(self, substrate):
         results = []
         for grid in (self.grid, self.serial):
             heights = asperity.self_affine(grid, **SURFACE)
-            with asperity.System(grid, 1.0) as system, \
+            with asperity.System(grid, 1.0, substrate=substrate) as system, \
                     asperity.Solver("pk", tolerance=1e-11) as solver:
                 system.set_topography(heights)
                 report = solver.solve(system, "mean_pressure", 0.01)
