@@ -350,6 +350,9 @@ ASP_EXPORT int asp_system_create(const asp_grid *grid, double contact_modulus, a
  * sums finite, normal doubles (ASP_ERR_INVALID_ARGUMENT naming 'contact_modulus'). */
 ASP_EXPORT int asp_system_create_free(const asp_grid *grid, double contact_modulus,
                                       asp_system **out);
+/* Frees the system (NULL is ignored). Called from a callback of a call that is using the
+ * system (a solve, or asp_system_get evaluating a potential), it does nothing and says so in
+ * asp_last_error_message(). */
 ASP_EXPORT void asp_system_destroy(asp_system *system);
 
 /* Copies n = nx*ny finite heights (local_pixels of this process's rows on a distributed grid)
@@ -450,8 +453,9 @@ ASP_EXPORT int asp_system_set_hard_wall(asp_system *system);
  * with the hard wall, also with the single gap 0, where the solver needs the wall's adhesive
  * stress -phi'(0)), and only from the thread that calls asp_solver_solve (or asp_system_get for
  * ASP_INTERACTION_ENERGY, and without the hard wall for ASP_CONTACT_FRACTION, which asks where
- * phi' < 0); it must not use the system or solver being solved. user_data is passed through
- * untouched.
+ * phi' < 0); it must not use the system or solver being solved: such calls from it are
+ * refused with ASP_ERR_INVALID_STATE (and a destroy does nothing), while other handles and
+ * functions work as anywhere. user_data is passed through untouched.
  * A non-zero return, or a value written to phi, dphi or d2phi that is not finite, ends the
  * solve with ASP_ERR_CALLBACK, naming the returned value or the first bad index and its gap;
  * the system then goes back to the state the solve started from.
@@ -588,6 +592,8 @@ typedef struct asp_solver asp_solver;
  *                 does not fall monotonically; raise "stall_window" for it on adhesive
  *                 scenes under mean-pressure control. */
 ASP_EXPORT int asp_solver_create(const char *algorithm, asp_solver **out);
+/* Frees the solver (NULL is ignored); from a callback of its own solve it does nothing and
+ * says so in asp_last_error_message(). */
 ASP_EXPORT void asp_solver_destroy(asp_solver *solver);
 
 /* What the solver's algorithm does, the controls, substrates and interactions it serves, and
@@ -625,7 +631,8 @@ ASP_EXPORT int asp_solver_set_max_iterations(asp_solver *solver, int64_t max_ite
  * system holds the valid, consistent state of that iteration and the termination reason is
  * ASP_TERMINATION_CANCELLED (unless that iteration's error already met the tolerance: a
  * converged state is reported as converged). The callback runs on the thread that called
- * asp_solver_solve and must not use the solver or system being solved. NULL removes it.
+ * asp_solver_solve and must not use the solver or system being solved (such calls from it are
+ * refused with ASP_ERR_INVALID_STATE, and a destroy does nothing). NULL removes it.
  * user_data is passed through untouched. */
 typedef int (*asp_progress_fn)(int64_t iteration, double seconds, double error, void *user_data);
 ASP_EXPORT int asp_solver_set_progress(asp_solver *solver, asp_progress_fn progress,

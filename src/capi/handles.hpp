@@ -3,6 +3,10 @@
 #pragma once
 
 #include <memory>
+#include <string>
+
+#include "core/checks.hpp"
+#include "core/error.hpp"
 
 #include "core/grid.hpp"
 #include "physics/system.hpp"
@@ -13,10 +17,51 @@ struct asp_grid {
   std::shared_ptr<asp::Grid> grid;
 };
 
+// `busy` is set while a call runs the user's callbacks with the handle in use (a solve, or
+// asp_system_get evaluating a potential), so that a callback calling back into the library
+// with that handle is refused instead of changing or freeing what the call is working on.
 struct asp_system {
   std::unique_ptr<asp::System> system;
+  mutable bool busy = false;
 };
 
 struct asp_solver {
   std::unique_ptr<asp::Solver> solver;
+  mutable bool busy = false;
 };
+
+namespace asp::capi {
+
+// A system or solver argument: Error(null_pointer) naming it if NULL, Error(invalid_state)
+// if a call that is running has it in use (a callback of that call is calling back with it).
+template <class Handle>
+void require_handle(const Handle *handle, const char *name) {
+  require_not_null(handle, name);
+  if (handle->busy)
+    throw Error(Status::invalid_state,
+                std::string("argument '") + name + "' is in use by the call that is running "
+                "this callback (asp_solver_solve, or asp_system_get evaluating a potential): "
+                "a callback must not use the system or solver being solved");
+}
+
+// Marks handles busy for its lifetime (null handles are skipped).
+class BusyScope {
+ public:
+  BusyScope(const asp_system *system, const asp_solver *solver = nullptr)
+      : system_(system), solver_(solver) {
+    if (system_ != nullptr) system_->busy = true;
+    if (solver_ != nullptr) solver_->busy = true;
+  }
+  ~BusyScope() {
+    if (system_ != nullptr) system_->busy = false;
+    if (solver_ != nullptr) solver_->busy = false;
+  }
+  BusyScope(const BusyScope &) = delete;
+  BusyScope &operator=(const BusyScope &) = delete;
+
+ private:
+  const asp_system *system_;
+  const asp_solver *solver_;
+};
+
+}  // namespace asp::capi

@@ -15,7 +15,7 @@ using asp::capi::guarded_on;
 
 namespace {
 const asp::SolveReport &report_of(const asp_solver *solver) {
-  asp::require_not_null(solver, "solver");
+  asp::capi::require_handle(solver, "solver");
   const asp::SolveReport &r = solver->solver->report();
   if (!r.available)
     throw asp::Error(asp::Status::invalid_state,
@@ -65,18 +65,25 @@ int asp_solver_create(const char *algorithm, asp_solver **out) {
   });
 }
 
-void asp_solver_destroy(asp_solver *solver) { delete solver; }
+void asp_solver_destroy(asp_solver *solver) {
+  // A solver in use by a running call (destroyed from its callback) is left alone, and the
+  // reason is the last error message.
+  guarded("asp_solver_destroy", [&] {
+    if (solver != nullptr) asp::capi::require_handle(solver, "solver");
+    delete solver;
+  });
+}
 
 int asp_solver_describe(const asp_solver *solver, char *buffer, int64_t size, int64_t *length) {
   return guarded("asp_solver_describe", [&] {
-    asp::require_not_null(solver, "solver");
+    asp::capi::require_handle(solver, "solver");
     asp::capi::copy_text(asp::describe(solver->solver->algorithm()), buffer, size, length);
   });
 }
 
 int asp_solver_set_option(asp_solver *solver, const char *name, double value) {
   return guarded("asp_solver_set_option", [&] {
-    asp::require_not_null(solver, "solver");
+    asp::capi::require_handle(solver, "solver");
     asp::require_not_null(name, "name");
     solver->solver->set_option(name, value);
   });
@@ -84,7 +91,7 @@ int asp_solver_set_option(asp_solver *solver, const char *name, double value) {
 
 int asp_solver_set_option_string(asp_solver *solver, const char *name, const char *value) {
   return guarded("asp_solver_set_option_string", [&] {
-    asp::require_not_null(solver, "solver");
+    asp::capi::require_handle(solver, "solver");
     asp::require_not_null(name, "name");
     asp::require_not_null(value, "value");
     solver->solver->set_option(name, std::string(value));
@@ -93,7 +100,7 @@ int asp_solver_set_option_string(asp_solver *solver, const char *name, const cha
 
 int asp_solver_get_option(const asp_solver *solver, const char *name, double *value) {
   return guarded("asp_solver_get_option", [&] {
-    asp::require_not_null(solver, "solver");
+    asp::capi::require_handle(solver, "solver");
     asp::require_not_null(name, "name");
     asp::require_not_null(value, "value");
     *value = solver->solver->option(name);
@@ -103,7 +110,7 @@ int asp_solver_get_option(const asp_solver *solver, const char *name, double *va
 int asp_solver_get_option_string(const asp_solver *solver, const char *name, char *buffer,
                                  int64_t size, int64_t *length) {
   return guarded("asp_solver_get_option_string", [&] {
-    asp::require_not_null(solver, "solver");
+    asp::capi::require_handle(solver, "solver");
     asp::require_not_null(name, "name");
     asp::capi::copy_text(solver->solver->option_text(name), buffer, size, length);
   });
@@ -111,14 +118,14 @@ int asp_solver_get_option_string(const asp_solver *solver, const char *name, cha
 
 int asp_solver_set_tolerance(asp_solver *solver, double tolerance) {
   return guarded("asp_solver_set_tolerance", [&] {
-    asp::require_not_null(solver, "solver");
+    asp::capi::require_handle(solver, "solver");
     solver->solver->set_option("tolerance", tolerance);
   });
 }
 
 int asp_solver_set_max_iterations(asp_solver *solver, int64_t max_iterations) {
   return guarded("asp_solver_set_max_iterations", [&] {
-    asp::require_not_null(solver, "solver");
+    asp::capi::require_handle(solver, "solver");
     asp::require_at_least(max_iterations, 1, "max_iterations");
     // Counts beyond 2^53 are not distinguishable as doubles; the option's range caps them.
     // Counts beyond the option's range (9.2e18) are no limit in practice: they mean the largest.
@@ -130,14 +137,14 @@ int asp_solver_set_max_iterations(asp_solver *solver, int64_t max_iterations) {
 
 int asp_solver_set_progress(asp_solver *solver, asp_progress_fn progress, void *user_data) {
   return guarded("asp_solver_set_progress", [&] {
-    asp::require_not_null(solver, "solver");
+    asp::capi::require_handle(solver, "solver");
     solver->solver->set_progress(progress, user_data);
   });
 }
 
 int asp_solver_set_history(asp_solver *solver, int on) {
   return guarded("asp_solver_set_history", [&] {
-    asp::require_not_null(solver, "solver");
+    asp::capi::require_handle(solver, "solver");
     solver->solver->set_history(on != 0);
   });
 }
@@ -145,9 +152,9 @@ int asp_solver_set_history(asp_solver *solver, int on) {
 int asp_solver_solve(asp_solver *solver, asp_system *system, int control, double value) {
   const asp::Grid *grid = system != nullptr ? &system->system->grid() : nullptr;
   return guarded_on("asp_solver_solve", grid, [&](Agreement &agreement) {
-    asp::require_not_null(solver, "solver");
+    asp::capi::require_handle(solver, "solver");
     solver->solver->forget_last_solve();
-    asp::require_not_null(system, "system");
+    asp::capi::require_handle(system, "system");
     const asp::Control c = control_of(control);
     // The algorithm and its options as one number (their count differs between algorithms),
     // whether the history is kept (it adds sums to each iteration), the control and the value.
@@ -156,14 +163,15 @@ int asp_solver_solve(asp_solver *solver, asp_system *system, int control, double
         solver->solver->history_on() ? 1.0 : 0.0, static_cast<double>(control), value};
     agreement.checks_passed(
         scalars, "arguments 'control' and 'value', or the solver's algorithm, options or history");
+    const asp::capi::BusyScope busy(system, solver);
     solver->solver->solve(*system->system, c, value);
   });
 }
 
 int asp_solver_supports(const asp_solver *solver, const asp_system *system, int control) {
   return guarded("asp_solver_supports", [&] {
-    asp::require_not_null(solver, "solver");
-    asp::require_not_null(system, "system");
+    asp::capi::require_handle(solver, "solver");
+    asp::capi::require_handle(system, "system");
     solver->solver->check_supported(*system->system, control_of(control));
   });
 }

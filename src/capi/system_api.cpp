@@ -48,11 +48,18 @@ int asp_system_create_free(const asp_grid *grid, double contact_modulus, asp_sys
   });
 }
 
-void asp_system_destroy(asp_system *system) { delete system; }
+void asp_system_destroy(asp_system *system) {
+  // A system in use by a running call (destroyed from its callback) is left alone, and the
+  // reason is the last error message.
+  guarded("asp_system_destroy", [&] {
+    if (system != nullptr) asp::capi::require_handle(system, "system");
+    delete system;
+  });
+}
 
 int asp_system_set_topography(asp_system *system, const double *heights, int64_t n) {
   return guarded_on("asp_system_set_topography", grid_of(system), [&](Agreement &agreement) {
-    asp::require_not_null(system, "system");
+    asp::capi::require_handle(system, "system");
     asp::require_array(heights, n, system->system->grid().local_pixels(), "heights");
     asp::require_finite_array(heights, n, "heights");
     agreement.checks_passed();
@@ -62,7 +69,7 @@ int asp_system_set_topography(asp_system *system, const double *heights, int64_t
 
 int asp_system_set_k0(asp_system *system, double k0) {
   return guarded_on("asp_system_set_k0", grid_of(system), [&](Agreement &agreement) {
-    asp::require_not_null(system, "system");
+    asp::capi::require_handle(system, "system");
     agreement.checks_passed({k0}, "argument 'k0'");
     system->system->set_k0(k0);
   });
@@ -70,7 +77,7 @@ int asp_system_set_k0(asp_system *system, double k0) {
 
 int asp_system_set_adhesion(asp_system *system, double work_of_adhesion, double range) {
   return guarded_on("asp_system_set_adhesion", grid_of(system), [&](Agreement &agreement) {
-    asp::require_not_null(system, "system");
+    asp::capi::require_handle(system, "system");
     agreement.checks_passed({work_of_adhesion, range}, "arguments 'work_of_adhesion' and 'range'");
     system->system->set_adhesion(work_of_adhesion, range);
   });
@@ -79,7 +86,7 @@ int asp_system_set_adhesion(asp_system *system, double work_of_adhesion, double 
 int asp_system_set_soft_wall(asp_system *system, double gamma_r, double rho_r, double gamma_a,
                              double rho_a) {
   return guarded_on("asp_system_set_soft_wall", grid_of(system), [&](Agreement &agreement) {
-    asp::require_not_null(system, "system");
+    asp::capi::require_handle(system, "system");
     agreement.checks_passed({gamma_r, rho_r, gamma_a, rho_a},
                             "arguments 'gamma_r', 'rho_r', 'gamma_a' and 'rho_a'");
     system->system->set_soft_wall(gamma_r, rho_r, gamma_a, rho_a);
@@ -89,7 +96,7 @@ int asp_system_set_soft_wall(asp_system *system, double gamma_r, double rho_r, d
 int asp_system_set_lennard_jones(asp_system *system, double work_of_adhesion,
                                  double equilibrium_distance) {
   return guarded_on("asp_system_set_lennard_jones", grid_of(system), [&](Agreement &agreement) {
-    asp::require_not_null(system, "system");
+    asp::capi::require_handle(system, "system");
     agreement.checks_passed({work_of_adhesion, equilibrium_distance},
                             "arguments 'work_of_adhesion' and 'equilibrium_distance'");
     system->system->set_lennard_jones(work_of_adhesion, equilibrium_distance);
@@ -98,7 +105,7 @@ int asp_system_set_lennard_jones(asp_system *system, double work_of_adhesion,
 
 int asp_system_set_hard_wall(asp_system *system) {
   return guarded_on("asp_system_set_hard_wall", grid_of(system), [&](Agreement &) {
-    asp::require_not_null(system, "system");
+    asp::capi::require_handle(system, "system");
     system->system->set_hard_wall();
   });
 }
@@ -110,7 +117,7 @@ static_assert(std::is_same<asp_potential_fn, asp::PotentialFunction>::value,
 int asp_system_set_potential(asp_system *system, asp_potential_fn fn, void *user_data,
                              int hard_wall) {
   return guarded_on("asp_system_set_potential", grid_of(system), [&](Agreement &agreement) {
-    asp::require_not_null(system, "system");
+    asp::capi::require_handle(system, "system");
     asp::require_not_null(reinterpret_cast<const void *>(fn), "fn");
     agreement.checks_passed({static_cast<double>(hard_wall != 0)}, "argument 'hard_wall'");
     system->system->set_user_potential(fn, user_data, hard_wall != 0);
@@ -120,7 +127,7 @@ int asp_system_set_potential(asp_system *system, asp_potential_fn fn, void *user
 int asp_system_set_reference_pressure(asp_system *system, double reference_pressure) {
   return guarded_on(
       "asp_system_set_reference_pressure", grid_of(system), [&](Agreement &agreement) {
-        asp::require_not_null(system, "system");
+        asp::capi::require_handle(system, "system");
         agreement.checks_passed({reference_pressure}, "argument 'reference_pressure'");
         asp::require_non_negative(reference_pressure, "reference_pressure");
         system->system->set_reference_pressure(reference_pressure);
@@ -129,18 +136,19 @@ int asp_system_set_reference_pressure(asp_system *system, double reference_press
 
 int asp_system_reset(asp_system *system) {
   return guarded_on("asp_system_reset", grid_of(system), [&](Agreement &) {
-    asp::require_not_null(system, "system");
+    asp::capi::require_handle(system, "system");
     system->system->reset_state();
   });
 }
 
 int asp_system_get(const asp_system *system, int key, double *value) {
   return guarded_on("asp_system_get", grid_of(system), [&](Agreement &agreement) {
-    asp::require_not_null(system, "system");
+    asp::capi::require_handle(system, "system");
     asp::require_not_null(value, "value");
     asp::capi::require_member(key, asp::capi::Family::scalar_key, "key");
     // Keys differ in the sums and transforms they take: all processes must ask for the same.
     agreement.checks_passed({Agreement::bits(key)}, "argument 'key'");
+    const asp::capi::BusyScope busy(system);  // the potential callback may run
     const asp::System &s = *system->system;
     const asp::ExponentialAdhesion *adhesion = asp::exponential_adhesion(s.interaction());
     double result = 0.0;
@@ -178,7 +186,7 @@ int asp_system_get(const asp_system *system, int key, double *value) {
 
 int asp_system_get_field(const asp_system *system, int field, double *values, int64_t n) {
   return guarded_on("asp_system_get_field", grid_of(system), [&](Agreement &agreement) {
-    asp::require_not_null(system, "system");
+    asp::capi::require_handle(system, "system");
     const asp::System &s = *system->system;
     asp::capi::require_member(field, asp::capi::Family::field, "field");
     asp::require_array(values, n, s.grid().local_pixels(), "values");

@@ -13,6 +13,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <typeinfo>
 #include <vector>
 
 #include "io/height_map.hpp"
@@ -507,6 +508,70 @@ TEST(Formats, AutomaticChoiceByContent) {
   EXPECT_EQ(asp::io::read_height_map(data("c_order.npy")).format, FileFormat::npy);
   EXPECT_EQ(asp::io::read_height_map(data("surface.x3p")).format, FileFormat::x3p);
   EXPECT_EQ(asp::io::read_height_map(data("savetxt_commas.csv")).format, FileFormat::text);
+}
+
+// ---- damaged files -------------------------------------------------------------------------
+
+// Reads a damaged copy of a fixture: it must be read as a height map whose sizes match its
+// values, all finite or missing (NaN), or refused with a FileError naming the file; nothing
+// else may escape. Returns whether it was refused.
+bool read_or_refused(const std::string &path, const std::string &what) {
+  try {
+    const HeightMap map = asp::io::read_height_map(path);
+    EXPECT_GE(map.nx, 1) << what;
+    EXPECT_GE(map.ny, 1) << what;
+    EXPECT_EQ(map.heights.size(), static_cast<size_t>(map.nx * map.ny)) << what;
+    for (double h : map.heights) EXPECT_FALSE(std::isinf(h)) << what;
+    return false;
+  } catch (const FileError &e) {
+    EXPECT_TRUE(contains(e.what(), path)) << what << ": " << e.what();
+    return true;
+  } catch (const std::exception &e) {
+    ADD_FAILURE() << what << ": " << typeid(e).name() << " escaped: " << e.what();
+  } catch (...) {
+    ADD_FAILURE() << what << ": an unknown exception escaped";
+  }
+  return true;
+}
+
+void write_file(const std::string &path, const std::string &content) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << content;
+}
+
+// Every fixture that reads, cut short and with a byte inverted, at every byte of its header
+// and at many of the rest: the damaged files of a failed transfer or a full disk. The binary formats check their lengths
+// (.npy) and checksums (.x3p), so that most damage is refused; text may still read as a
+// smaller matrix.
+TEST(DamagedFiles, EveryCutAndEveryInvertedByteIsReadOrRefused) {
+  const char *fixtures[] = {"c_order.npy", "fortran_order.npy", "float32.npy", "int16.npy",
+                            "version2.npy", "profile.npy", "gwyddion.txt", "matlab.txt",
+                            "savetxt_comments.txt", "savetxt_commas.csv", "surface.x3p",
+                            "integer_mask.x3p", "profile.x3p", "datalist.x3p"};
+  for (const char *name : fixtures) {
+    const std::string whole = file_text(data(name));
+    ASSERT_FALSE(read_or_refused(data(name), name)) << name << " itself must read";
+    const std::string extension = std::string(name).substr(std::string(name).rfind('.'));
+    const std::string path = temp_path(std::string("damaged") + extension);
+    // Every byte of the first 96 (the headers), then every 7th (cuts) or 5th (inversions).
+    const auto next = [](size_t at, size_t stride) { return at < 96 ? at + 1 : at + stride; };
+    int cuts = 0, cuts_refused = 0;
+    for (size_t length = 0; length < whole.size(); length = next(length, 7), ++cuts) {
+      write_file(path, whole.substr(0, length));
+      cuts_refused += read_or_refused(path, std::string(name) + " cut to " +
+                                                std::to_string(length) + " bytes");
+    }
+    for (size_t at = 0; at < whole.size(); at = next(at, 5)) {
+      std::string damaged = whole;
+      damaged[at] = static_cast<char>(~damaged[at]);
+      write_file(path, damaged);
+      read_or_refused(path, std::string(name) + " with byte " + std::to_string(at) + " inverted");
+    }
+    // Binary files cut anywhere are refused: their headers say how much follows.
+    if (extension != ".txt" && extension != ".csv") {
+      EXPECT_EQ(cuts_refused, cuts) << name;
+    }
+  }
 }
 
 }  // namespace
