@@ -115,7 +115,10 @@ void bugnicourt_separable(Formulation &f, const LocalTerm &psi, Monitor &monitor
   const BugnicourtPasses passes(f);
   const auto n = static_cast<std::size_t>(f.size());
   Field &variable = f.variable();
-  Field y_field(n), q_field(n), qy_field(n), c(n), d(n), k(n), e_field(n), ey_field(n);
+  Field y_field(n), q_field(n), qy_field(n), d(n), k(n), e_field(n), ey_field(n);
+  // Q's gradient at 0, which a trial point rescaled to the mean needs; none without a mean
+  // constraint.
+  Field c(f.constrains_mean() ? n : 0);
   // The iterate, q and the states there, and the trial arrays (after a step, the previous
   // iterate's), exchanged when a step is taken.
   double *x = variable.data(), *y = y_field.data();
@@ -123,7 +126,7 @@ void bugnicourt_separable(Formulation &f, const LocalTerm &psi, Monitor &monitor
   double *e = e_field.data(), *ey = ey_field.data();
   const double value_per_state = psi.value_per_state(), slope = psi.slope_per_state(),
                bend = psi.curvature_per_state();
-  f.quadratic_part_at_zero(c.data());
+  if (f.constrains_mean()) f.quadratic_part_at_zero(c.data());
 
   const auto gradient = [&](std::int64_t i) { return q[i] + slope * e[i]; };
   // (H d)_i at the iterate the last step started from, whose states ey then holds.

@@ -168,7 +168,7 @@ class BugnicourtPasses {
 
   // Separable objectives f = Q + sum psi: the trial point y = s max(x + alpha d, lower) (s as
   // in step), Q's gradient there followed, qy = s (q + alpha k) + (1 - s) c (k = Q d, c Q's
-  // gradient at 0), and the local term's states there, into y, qy and states_y; with the
+  // gradient at 0, read only under a mean constraint), and the local term's states there, into y, qy and states_y; with the
   // changes from x, where q and states hold Q's gradient and the states. Q changes by
   // (y - x).(q + qy)/2, exactly for a quadratic, so that the objective at the trial point
   // needs no transform unless the bound cut the step (then qy is evaluated, and
@@ -186,19 +186,26 @@ class BugnicourtPasses {
       out.cut = uniform || moved[1] > 0.0;
     }
     const double level = uniform ? f_.mean_target() : 0.0;
-    const auto s = loops::sums<4>(reductions_, n_, [&](std::int64_t i, double *sum) {
-      const double moved = x[i] + alpha * d[i];
-      const double yi = (moved > bound(i) ? moved : bound(i)) * scale + level;
-      const double qi = scale * (q[i] + alpha * k[i]) + (1.0 - scale) * c[i];
-      const double ei = i < bounded_ ? psi.state(yi) : 0.0;  // only the bounded have psi
-      y[i] = yi;
-      qy[i] = qi;
-      states_y[i] = ei;
-      sum[0] += (yi - x[i]) * (qi + q[i]);
-      sum[1] += ei - states[i];
-      sum[2] += ei;
-      sum[3] += moved < bound(i) ? 1.0 : 0.0;
-    });
+    // The (1 - s) c term only under a mean constraint, so that c is not read without one
+    // (where s = 1 and c may be empty).
+    const auto pass = [&](auto mean) {
+      return loops::sums<4>(reductions_, n_, [&](std::int64_t i, double *sum) {
+        const double moved = x[i] + alpha * d[i];
+        const double yi = (moved > bound(i) ? moved : bound(i)) * scale + level;
+        const double qi = decltype(mean)::value
+                              ? scale * (q[i] + alpha * k[i]) + (1.0 - scale) * c[i]
+                              : q[i] + alpha * k[i];
+        const double ei = i < bounded_ ? psi.state(yi) : 0.0;  // only the bounded have psi
+        y[i] = yi;
+        qy[i] = qi;
+        states_y[i] = ei;
+        sum[0] += (yi - x[i]) * (qi + q[i]);
+        sum[1] += ei - states[i];
+        sum[2] += ei;
+        sum[3] += moved < bound(i) ? 1.0 : 0.0;
+      });
+    };
+    const auto s = mean_ ? pass(std::true_type()) : pass(std::false_type());
     out.cut = out.cut || s[3] > 0.0;
     out.quadratic_change = 0.5 * s[0];
     out.state_change = s[1];

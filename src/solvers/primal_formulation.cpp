@@ -33,7 +33,6 @@ PrimalFormulation::PrimalFormulation(System &system, Control control, double val
     dphi_ = Field(static_cast<std::size_t>(n_));
     d2phi_ = Field(static_cast<std::size_t>(n_));
   }
-  displacement_ = Field(static_cast<std::size_t>(unknowns_));
   spectrum_ = substrate_.make_spectrum();
   if (substrate_.surface_beyond_grid()) {
     surface_unknowns_ = Field(static_cast<std::size_t>(unknowns_));
@@ -96,56 +95,42 @@ double PrimalFormulation::apply_stiffness(const double *field, double *out) {
   return factor * (2.0 * all - singles);
 }
 
-void PrimalFormulation::elastic_pressure(const double *x, double *out) {
-  // u = x + (h - max h)/l + delta on the grid, u = x beyond it, then p = K u, scaled; u stays
-  // in displacement_.
-  double *u = displacement_.data();
+double PrimalFormulation::elastic_pressure(const double *x, double *out) {
+  // u = x + (h - max h)/l + delta on the grid, u = x beyond it, into out, then p = K u,
+  // scaled, over it (the transform reads u before it writes p).
   const double per_length = 1.0 / length_unit_, top = max_height_, delta = penetration_;
   loops::for_each(n_, [&](std::int64_t i) {
-    u[i] = x[i] + (heights_[i] - top) * per_length + delta;
+    out[i] = x[i] + (heights_[i] - top) * per_length + delta;
   });
-  std::copy(x + n_, x + unknowns_, u + n_);
-  apply_stiffness(u, out);
-}
-
-double PrimalFormulation::energy_beyond_grid(const double *u, const double *pressure) const {
-  // The displacement beyond the grid (a free substrate's padded surface) has only elastic
-  // energy. (A sum on every process, also one whose part of that surface is empty.)
-  if (!substrate_.surface_beyond_grid()) return 0.0;
-  return 0.5 * loops::sum(grid_.reductions(), unknowns_ - n_,
-                          [&](std::int64_t i) { return u[n_ + i] * pressure[n_ + i]; });
+  if (out != x) std::copy(x + n_, x + unknowns_, out + n_);
+  return apply_stiffness(out, out);
 }
 
 double PrimalFormulation::value_and_gradient(const double *x, double *gradient) {
   // E = (1/2) u.p (+ sum_i phi(x_i) with adhesion), gradient p (+ phi'(x)), all scaled.
   if (potential_ != nullptr) return value_and_gradient_of_potential(x, gradient);
   if (!adhesive_) return quadratic_part(x, gradient);
-  elastic_pressure(x, gradient);
+  const double elastic = 0.5 * elastic_pressure(x, gradient);
   counters_.evaluations += 1;
-  const double *u = displacement_.data();
-  const double beyond = energy_beyond_grid(u, gradient);
-  // One pass adds the interaction's pressure to the gradient and sums both energies.
+  // One pass adds the interaction's pressure to the gradient and sums its energy.
   const ExponentialPotential phi = adhesion_;
-  return beyond + loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
+  return elastic + loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
     const ExponentialPotential::Terms t = phi.at(x[i]);
-    const double elastic = 0.5 * u[i] * gradient[i];
     gradient[i] += t.dphi;
-    return elastic + t.phi;
+    return t.phi;
   });
 }
 
 double PrimalFormulation::value_and_gradient_of_potential(const double *x, double *gradient) {
   // As with adhesion, with the potential evaluated over the grid's gaps at once (a user's
   // callback may throw Error(callback)).
-  elastic_pressure(x, gradient);
+  const double elastic = 0.5 * elastic_pressure(x, gradient);
   counters_.evaluations += 1;
   potential_->evaluate(n_, x, phi_.data(), dphi_.data(), nullptr);
-  const double *u = displacement_.data(), *phi = phi_.data(), *dphi = dphi_.data();
-  const double beyond = energy_beyond_grid(u, gradient);
-  return beyond + loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
-    const double elastic = 0.5 * u[i] * gradient[i];
+  const double *phi = phi_.data(), *dphi = dphi_.data();
+  return elastic + loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
     gradient[i] += dphi[i];
-    return elastic + phi[i];
+    return phi[i];
   });
 }
 
@@ -164,15 +149,13 @@ double PrimalFormulation::gradient_at_zero(double *out) {
 }
 
 double PrimalFormulation::quadratic_part(const double *x, double *gradient) {
-  elastic_pressure(x, gradient);
+  const double energy = elastic_pressure(x, gradient);
   counters_.evaluations += 1;
-  const double *u = displacement_.data();
-  return 0.5 * loops::sum(grid_.reductions(), unknowns_,
-                          [&](std::int64_t i) { return u[i] * gradient[i]; });
+  return 0.5 * energy;
 }
 
 double PrimalFormulation::quadratic_part_at_zero(double *out) {
-  // out doubles as the zero iterate: it is read (into the displacement) before it is written.
+  // out doubles as the zero iterate: each of its values is read before it is written.
   loops::for_each(unknowns_, [&](std::int64_t i) { out[i] = 0.0; });
   return quadratic_part(out, out);
 }
@@ -300,7 +283,8 @@ bool PrimalFormulation::finish() {
                     p[i] = clipped * pressure;
                     return p[i] / n;
                   });
-  double *u = displacement_.data();
+  Field displacement = grid_.make_field();
+  double *u = displacement.data();
   substrate_.forward(p, spectrum_.data());
   Complex *s = spectrum_.data();
   const double *c = substrate_.normalised_compliance().data();

@@ -77,20 +77,17 @@ class PrimalFormulation final : public ScaledFormulation {
   // K u (scaled) of a field, into out; the q = 0 mode only under penetration control.
   // Returns u.K u (by Parseval, from the same pass over the spectrum).
   double apply_stiffness(const double *field, double *out);
-  // The scaled elastic pressure K u of the displacement the gap x makes, into out (u into
-  // displacement_).
-  void elastic_pressure(const double *x, double *out);
+  // The scaled elastic pressure K u of the displacement u the gap x makes, into out (which
+  // may be x itself); returns u.K u.
+  double elastic_pressure(const double *x, double *out);
   // value_and_gradient with a user's potential and the hard wall.
   double value_and_gradient_of_potential(const double *x, double *gradient);
-  // (1/2) u.p over the surface beyond the grid; 0 without one.
-  double energy_beyond_grid(const double *u, const double *pressure) const;
   // phi'(g) of the interaction at the gaps (clipped at the wall) into slope; returns phi'(0).
   double interaction_slopes(const double *gap, double *slope);
 
   const Field &stiffness_;  // normalised: backward(stiffness * forward(u)) = K u
   double penetration_;  // scaled, in u (0 under mean-gap control, where it does not matter)
 
-  Field displacement_;  // over the whole surface
   Spectrum spectrum_;
   LocalTerm local_term_;
   // A user's potential with the hard wall, in the solve's units (null otherwise), and its
