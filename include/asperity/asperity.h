@@ -480,7 +480,8 @@ ASP_EXPORT int asp_system_set_potential(asp_system *system, asp_potential_fn fn,
  * count). For a surface without slope (the flat) a solve uses its own scale instead: the
  * mean pressure, or K~(0) times the penetration (on a free system the stiffness under a
  * uniform pressure), or with adhesion the largest tensile stress w/rho if that is larger
- * (E* if all are zero). A value > 0 overrides all this. */
+ * (with a soft wall its largest tensile stress, gamma_a^2/(8 gamma_r rho) for one range rho;
+ * E* if all are zero). A value > 0 overrides all this. */
 ASP_EXPORT int asp_system_set_reference_pressure(asp_system *system, double reference_pressure);
 
 /* Forgets the state (zero pressure), so the next solve starts cold. */

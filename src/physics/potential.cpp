@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "physics/potential.hpp"
 
+#include <cfloat>
 #include <cmath>
 
 #include "core/checks.hpp"
@@ -92,8 +93,19 @@ std::unique_ptr<Potential> SoftWallPotential::in_units(double length, double pre
 }
 
 double SoftWallPotential::pressure_scale() const {
-  if (attraction_.coefficient < 0.0) return -attraction_.coefficient / attraction_.range;
-  return repulsion_.coefficient / repulsion_.range;
+  // Without attraction, the repulsion's stress at g = 0. With it, the largest tensile stress
+  // phi'(g) = b u - a u^m over u = exp(-g/r_a), with a = c_r/r_r, b = gamma_a/r_a and
+  // m = r_a/r_r: where the repulsion fades faster (m > 1) it is b u* (1 - 1/m) at
+  // u* = (b/(a m))^(1/(m-1)); with one range (m = 2) gamma_a^2/(8 gamma_r rho). The
+  // attraction's own scale b stands in where that maximum is not a finite, positive double.
+  if (!(attraction_.coefficient < 0.0)) return repulsion_.coefficient / repulsion_.range;
+  const double a = repulsion_.coefficient / repulsion_.range;
+  const double b = -attraction_.coefficient / attraction_.range;
+  const double m = attraction_.range / repulsion_.range;
+  if (!(m > 1.0)) return b;
+  const double u = std::pow(b / (a * m), 1.0 / (m - 1.0));
+  const double largest = b * u * (1.0 - 1.0 / m);
+  return std::isfinite(largest) && largest >= DBL_MIN ? largest : b;
 }
 
 double SoftWallPotential::length_scale() const {

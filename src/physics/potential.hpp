@@ -62,8 +62,8 @@ class SoftWallPotential final : public Potential {
   void evaluate(std::int64_t n, const double *gap, double *phi, double *dphi,
                 double *d2phi) const override;
   std::unique_ptr<Potential> in_units(double length, double pressure) const override;
-  // The largest tensile stress of the attraction alone, gamma_a/rho_a, or the repulsion's
-  // stress 2 gamma_r/rho_r at g = 0 without attraction.
+  // The largest tensile stress, max phi'(g) (gamma_a^2/(8 gamma_r rho) with one range rho),
+  // or the repulsion's stress 2 gamma_r/rho_r at g = 0 without attraction.
   double pressure_scale() const override;
   double length_scale() const override;
   std::string description() const override;

@@ -225,18 +225,24 @@ void bugnicourt_separable(Formulation &f, const LocalTerm &psi, Monitor &monitor
 
 bool on_the_gap(const OptionValues &options) { return options.text("variable") == "gap"; }
 
-// On a free substrate the gap formulation takes penetration control only (its constructor
-// refuses the mean gap, naming the substrate).
+// On a free substrate the gap formulation takes penetration control only.
+constexpr const char *mean_gap_on_free =
+    "the mean displacement is not a free mode there whose energy can be left out";
+
 Offer offer_for(const OptionValues &options) {
   if (on_the_gap(options))
     return {{Control::mean_gap, Control::penetration},
             {SubstrateKind::periodic, SubstrateKind::free},
             {InteractionKind::hard_wall, InteractionKind::adhesive_hard_wall},
-            "variable = gap"};
+            "variable = gap",
+            {Control::penetration},
+            mean_gap_on_free};
   return {{Control::mean_pressure, Control::penetration},
           {SubstrateKind::periodic, SubstrateKind::free},
           {InteractionKind::hard_wall},
-          "variable = pressure"};
+          "variable = pressure",
+          {},
+          ""};
 }
 
 template <class Variable>

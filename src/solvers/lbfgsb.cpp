@@ -442,11 +442,15 @@ Offer offer_for(const OptionValues &options) {
             {SubstrateKind::periodic, SubstrateKind::free},
             {InteractionKind::hard_wall, InteractionKind::adhesive_hard_wall,
              InteractionKind::user_potential_hard_wall},
-            "variable = gap"};
+            "variable = gap",
+            {},
+            ""};
   return {{Control::penetration},
           {SubstrateKind::periodic, SubstrateKind::free},
           {InteractionKind::hard_wall},
-          "variable = pressure"};
+          "variable = pressure",
+          {},
+          ""};
 }
 
 template <class Variable>

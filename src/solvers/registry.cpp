@@ -85,7 +85,8 @@ void check_request(const AlgorithmSpec &algorithm, const OptionValues &options,
   const Offer offer = algorithm.offer_for != nullptr
                           ? algorithm.offer_for(options)
                           : Offer{algorithm.controls, algorithm.substrates,
-                                  algorithm.interactions, ""};
+                                  algorithm.interactions, "", algorithm.free_controls,
+                                  algorithm.free_reason};
   const std::string solver =
       "solver '" + algorithm.name + "'" +
       (offer.condition.empty() ? "" : " with " + offer.condition);
@@ -98,6 +99,12 @@ void check_request(const AlgorithmSpec &algorithm, const OptionValues &options,
     throw Error(Status::unsupported, solver + " does not work on a " +
                                          substrate_name(system.substrate().kind()) +
                                          " (it works on: " + names(s, substrate_name) + ")");
+  const auto &f = offer.free_controls;
+  if (system.substrate().kind() == SubstrateKind::free && !f.empty() &&
+      std::find(f.begin(), f.end(), control) == f.end())
+    throw Error(Status::unsupported, solver + " does not offer " + control_name(control) +
+                                         " control on a free half-space (it offers there: " +
+                                         names(f, control_name) + "): " + offer.free_reason);
   const auto &i = offer.interactions;
   const std::string interaction = interaction_name(system.interaction().kind());
   const bool vowel = interaction.find_first_of("aeio") == 0;  // "a user potential"
@@ -111,6 +118,9 @@ std::string describe(const AlgorithmSpec &algorithm) {
   std::string text = algorithm.name + ": " + algorithm.summary + "\n";
   text += "controls: " + names(algorithm.controls, control_name) + "\n";
   text += "substrates: " + names(algorithm.substrates, substrate_name) + "\n";
+  if (!algorithm.free_controls.empty())
+    text += "controls on a free half-space: " + names(algorithm.free_controls, control_name) +
+            " (" + algorithm.free_reason + ")\n";
   text += "interactions: " + names(algorithm.interactions, interaction_name) + "\n";
   text += "options:\n";
   for (const OptionSpec &o : algorithm.options) {

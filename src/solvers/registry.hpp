@@ -43,6 +43,10 @@ struct Offer {
   std::vector<SubstrateKind> substrates;
   std::vector<InteractionKind> interactions;
   std::string condition;
+  // The controls offered on a free substrate when fewer than `controls` (empty: all of
+  // them), and why the others are not.
+  std::vector<Control> free_controls;
+  std::string free_reason;
 };
 
 struct AlgorithmSpec {
@@ -52,6 +56,9 @@ struct AlgorithmSpec {
   std::vector<Control> controls;
   std::vector<SubstrateKind> substrates;
   std::vector<InteractionKind> interactions;
+  // As in Offer: the controls on a free substrate when fewer, and why.
+  std::vector<Control> free_controls;
+  std::string free_reason;
   // What it serves with these option values, when that depends on them (null: the lists
   // above, whatever the options).
   Offer (*offer_for)(const OptionValues &options) = nullptr;

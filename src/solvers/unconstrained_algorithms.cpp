@@ -96,6 +96,10 @@ AlgorithmSpec soft_spec(const char *name, const char *summary, bool periodic_onl
                         ? std::vector<SubstrateKind>{SubstrateKind::periodic}
                         : std::vector<SubstrateKind>{SubstrateKind::periodic, SubstrateKind::free};
   spec.interactions = soft_interactions;
+  spec.free_controls = {Control::penetration};
+  spec.free_reason =
+      "the rigid-body penetration is not a free mode of the displacement there, so the mean "
+      "pressure cannot be imposed through it";
   spec.options = std::move(options);
   spec.run = run;
   return spec;

@@ -4,7 +4,8 @@
  * given NaN and infinities (ASP_ERR_INVALID_ARGUMENT naming it), every array given a count
  * one off (ASP_ERR_SIZE_MISMATCH naming it), constants of the wrong family, and callbacks
  * that call back into the library with the handles being solved (ASP_ERR_INVALID_STATE, the
- * call refused and the solve unharmed). After each refusal on a system, its topography,
+ * call refused and the solve unharmed), and asp_solver_supports agreeing with what a solve
+ * does for every algorithm, control, substrate and interaction. After each refusal on a system, its topography,
  * pressure, gap and scalars are unchanged to the bit, and the handles work: the contract of
  * the header's "Errors" section. */
 #include <math.h>
@@ -432,6 +433,53 @@ static void callbacks_reentering(void) {
   asp_grid_destroy(r.other);
 }
 
+/* ---- asp_solver_supports says what asp_solver_solve then does --------------------------- */
+
+static void supports_agrees_with_solve(void) {
+  static const char *const algorithms[][2] = {
+      {"pk", NULL},           {"bugnicourt", "pressure"}, {"bugnicourt", "gap"},
+      {"lbfgsb", "pressure"}, {"lbfgsb", "gap"},          {"lbfgs", NULL},
+      {"lbfgs_fourier", NULL}, {"gfmd", NULL},            {"fire", NULL},
+      {"fire_mass_weighted", NULL}};
+  const int controls[3] = {ASP_CONTROL_MEAN_PRESSURE, ASP_CONTROL_PENETRATION,
+                           ASP_CONTROL_MEAN_GAP};
+  const double values[3] = {0.001, 0.05, 0.05};
+  asp_grid *small = NULL;
+  double h[16 * 16];
+  int substrate, interaction, a, k;
+  CHECK_OK(asp_grid_create_2d(16, 16, 16.0, 16.0, &small));
+  CHECK_OK(asp_topography_sphere(small, 40.0, h, 16 * 16));
+  for (substrate = 0; substrate < 2; ++substrate)
+    for (interaction = 0; interaction < 3; ++interaction) {
+      asp_system *s = NULL;
+      CHECK_OK(substrate == 0 ? asp_system_create(small, 1.0, &s)
+                              : asp_system_create_free(small, 1.0, &s));
+      CHECK_OK(asp_system_set_topography(s, h, 16 * 16));
+      if (interaction == 1) CHECK_OK(asp_system_set_adhesion(s, 0.001, 0.5));
+      if (interaction == 2) CHECK_OK(asp_system_set_soft_wall(s, 0.01, 0.5, 0.001, 0.5));
+      for (a = 0; a < (int)(sizeof algorithms / sizeof algorithms[0]); ++a)
+        for (k = 0; k < 3; ++k) {
+          asp_solver *v = NULL;
+          int supported, solved;
+          CHECK_OK(asp_solver_create(algorithms[a][0], &v));
+          if (algorithms[a][1] != NULL)
+            CHECK_OK(asp_solver_set_option_string(v, "variable", algorithms[a][1]));
+          CHECK_OK(asp_solver_set_max_iterations(v, 3));
+          supported = asp_solver_supports(v, s, controls[k]);
+          solved = asp_solver_solve(v, s, controls[k], values[k]);
+          if (!CHECK(supported == ASP_OK ? solved == ASP_OK : solved == supported))
+            fprintf(stderr, "  %s/%s, %s substrate, interaction %d, control %d: supports %d, "
+                            "solve %d (%s)\n",
+                    algorithms[a][0], algorithms[a][1] ? algorithms[a][1] : "-",
+                    substrate == 0 ? "periodic" : "free", interaction, controls[k], supported,
+                    solved, asp_last_error_message());
+          asp_solver_destroy(v);
+        }
+      asp_system_destroy(s);
+    }
+  asp_grid_destroy(small);
+}
+
 int main(void) {
   CHECK_OK(asp_grid_create_2d(NX, NY, (double)NX, (double)NY, &grid));
   CHECK_OK(asp_topography_self_affine(grid, 0.8, (double)NX, 8.0, 2.0, ASP_RMS_SLOPE, 0.1, 5,
@@ -448,6 +496,7 @@ int main(void) {
   wrong_counts();
   out_of_domain();
   callbacks_reentering();
+  supports_agrees_with_solve();
 
   asp_solver_destroy(solver);
   asp_system_destroy(sys);

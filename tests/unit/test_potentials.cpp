@@ -199,6 +199,30 @@ TEST(SoftWallPotential, InUnitsRoundTrip) {
 
 // ---- the Lennard-Jones 9-3 wall -----------------------------------------------------------------
 
+// The largest tensile stress max phi'(g), which sets the units of a solve on a surface without
+// slope: gamma_a^2/(8 gamma_r rho) with one range (the thesis's gamma_r/gamma_a = 1024 makes
+// it 8192 times smaller than the attraction's own gamma_a/rho, which the scale once was, so
+// that errors divided by it hid imbalances of thousands of tolerances), and the largest
+// sampled phi' (step 1e-5 of the shorter range: short of the maximum by about the third
+// derivative times step^2/8, below 1e-9 of it) with two ranges.
+TEST(SoftWallPotential, PressureScaleIsTheLargestTensileStress) {
+  const double gamma_r = 23188.1388, gamma_a = 22.6360403, rho = 0.03125;
+  const asp::SoftWallPotential one(gamma_r, rho, gamma_a, rho);
+  const double closed_form = gamma_a * gamma_a / (8.0 * gamma_r * rho);
+  EXPECT_NEAR(one.pressure_scale(), closed_form, 1e-13 * closed_form);
+  const double ranges[][2] = {{rho, rho}, {0.5, 0.8}, {1.0, 3.0}};
+  for (const auto &r : ranges) {
+    const asp::SoftWallPotential wall(2.0, r[0], 0.5, r[1]);
+    const double step = 1e-5 * std::fmin(r[0], r[1]);
+    double largest = -HUGE_VAL;
+    for (double g = -5.0 * r[1]; g < 20.0 * r[1]; g += step)
+      largest = std::fmax(largest, at(wall, g).dphi);
+    EXPECT_NEAR(wall.pressure_scale(), largest, 1e-9 * largest) << r[0] << ", " << r[1];
+  }
+  // Without attraction, the repulsion's stress at the wall.
+  EXPECT_DOUBLE_EQ(asp::SoftWallPotential(2.0, 0.5, 0.0, 0.5).pressure_scale(), 2.0 * 2.0 / 0.5);
+}
+
 TEST(LennardJonesPotential, DerivativesMatchCentralDifferences) {
   const double w = 0.04, z0 = 1.5;
   const asp::LennardJonesPotential lj(w, z0);
