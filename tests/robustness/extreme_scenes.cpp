@@ -72,7 +72,9 @@ bool is_unconstrained(const Column &c) {
   return std::strcmp(c.algorithm, "pk") != 0 && std::strcmp(c.algorithm, "bugnicourt") != 0 &&
          std::strcmp(c.algorithm, "lbfgsb") != 0;
 }
-bool on_gap(const Column &c) { return c.variable != nullptr && std::strcmp(c.variable, "gap") == 0; }
+bool on_gap(const Column &c) {
+  return c.variable != nullptr && std::strcmp(c.variable, "gap") == 0;
+}
 
 // ------------------------------------------------------------------------------------------
 // Scenes
@@ -87,11 +89,11 @@ struct Scene {
   double modulus = 1;
   std::vector<double> h;
   Kind kind = Kind::hard;
-  double w = 0, rho = 0;                      // adhesion; Lennard-Jones: w and z0 = rho
-  double gr = 0, rr = 0, ga = 0, ra = 0;      // exponential soft wall
-  bool nan_hard_wall = false;                 // Kind::user_nan with the hard wall
-  double tensile = 0;                         // the interaction's largest tensile stress
-  double slope_pressure = 0;                  // E* h'_rms/2 (periodic), from this file's DFT
+  double w = 0, rho = 0;                  // adhesion; Lennard-Jones: w and z0 = rho
+  double gr = 0, rr = 0, ga = 0, ra = 0;  // exponential soft wall
+  bool nan_hard_wall = false;             // Kind::user_nan with the hard wall
+  double tensile = 0;                     // the interaction's largest tensile stress
+  double slope_pressure = 0;              // E* h'_rms/2 (periodic), from this file's DFT
   int64_t n() const { return nx * ny; }
   bool hard_wall() const {
     return kind == Kind::hard || kind == Kind::adhesive || kind == Kind::user_hard ||
@@ -158,7 +160,8 @@ double d2phi(const Scene &s, double g) {
 }
 
 double phi(const Scene &s, double g) {  // of the potentials given by callback
-  if (s.kind == Kind::user_hard || s.nan_hard_wall) return -s.w * std::exp(-std::max(g, 0.0) / s.rho);
+  if (s.kind == Kind::user_hard || s.nan_hard_wall)
+    return -s.w * std::exp(-std::max(g, 0.0) / s.rho);
   const Exp rep{s.gr, s.rr / 2, -20 * s.rr}, att{s.ga, s.ra, -40 * s.ra};
   return rep.v(g) - att.v(g);
 }
@@ -251,13 +254,14 @@ double slope_pressure(const Scene &s) {
 // substrate 1/C(0), C(0) = 4 ln(1 + sqrt 2) dx/(pi E*) for square pixels.
 double pixel_stiffness(const Scene &s, double k0) {
   if (s.free_substrate)
-    return kPi * s.modulus / (4 * std::log(1 + std::sqrt(2.0)) * (s.lx / static_cast<double>(s.nx)));
+    return kPi * s.modulus /
+           (4 * std::log(1 + std::sqrt(2.0)) * (s.lx / static_cast<double>(s.nx)));
   double sum = 0;
   for (int64_t j = 0; j < s.ny; ++j)
     for (int64_t i = 0; i < s.nx; ++i)
-      sum += (i == 0 && j == 0) ? k0
-                                : s.modulus / 2 *
-                                      std::hypot(wavevector(i, s.nx, s.lx), wavevector(j, s.ny, s.ly));
+      sum += (i == 0 && j == 0)
+                 ? k0
+                 : s.modulus / 2 * std::hypot(wavevector(i, s.nx, s.lx), wavevector(j, s.ny, s.ly));
   return sum / static_cast<double>(s.n());
 }
 
@@ -266,9 +270,10 @@ double pixel_compliance(const Scene &s, double k0) {
   double sum = 0;
   for (int64_t j = 0; j < s.ny; ++j)
     for (int64_t i = 0; i < s.nx; ++i)
-      sum += (i == 0 && j == 0) ? 1 / k0
-                                : 2 / (s.modulus * std::hypot(wavevector(i, s.nx, s.lx),
-                                                              wavevector(j, s.ny, s.ly)));
+      sum +=
+          (i == 0 && j == 0)
+              ? 1 / k0
+              : 2 / (s.modulus * std::hypot(wavevector(i, s.nx, s.lx), wavevector(j, s.ny, s.ly)));
   return sum / static_cast<double>(s.n());
 }
 
@@ -329,11 +334,12 @@ bool all_finite(const std::vector<double> &v) {
   return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
 }
 
-void read_state(const Scene &s, const asp_system *sys, Outcome &o, int control = 0, double value = 0) {
-  const int keys[] = {ASP_CONTACT_FRACTION, ASP_MEAN_PRESSURE,     ASP_MEAN_GAP,
-                      ASP_ELASTIC_ENERGY,   ASP_PENETRATION,       ASP_TOTAL_FORCE,
+void read_state(const Scene &s, const asp_system *sys, Outcome &o, int control = 0,
+                double value = 0) {
+  const int keys[] = {ASP_CONTACT_FRACTION,   ASP_MEAN_PRESSURE,    ASP_MEAN_GAP,
+                      ASP_ELASTIC_ENERGY,     ASP_PENETRATION,      ASP_TOTAL_FORCE,
                       ASP_REFERENCE_PRESSURE, ASP_MEAN_MODE_ENERGY, ASP_ATTRACTIVE_FRACTION,
-                      ASP_REPULSIVE_FORCE,  ASP_ATTRACTIVE_FORCE,  ASP_INTERACTION_ENERGY};
+                      ASP_REPULSIVE_FORCE,    ASP_ATTRACTIVE_FORCE, ASP_INTERACTION_ENERGY};
   double v[sizeof keys / sizeof keys[0]];
   o.scalars_finite = true;
   for (size_t k = 0; k < sizeof keys / sizeof keys[0]; ++k) {
@@ -356,7 +362,8 @@ void read_state(const Scene &s, const asp_system *sys, Outcome &o, int control =
   // own pressures: the control's (the mean pressure asked for, or K~(0) times the
   // penetration asked for) and the interaction's largest tensile stress (for the soft walls
   // max phi'(g), found by scanning the gaps), whichever is larger, else E*.
-  const double hr = *std::max_element(s.h.begin(), s.h.end()) - *std::min_element(s.h.begin(), s.h.end());
+  const double hr =
+      *std::max_element(s.h.begin(), s.h.end()) - *std::min_element(s.h.begin(), s.h.end());
   if (hr > 0) {
     o.pref = s.free_substrate ? o.pref_library : s.slope_pressure;
   } else {
@@ -412,8 +419,8 @@ std::string fmt(const char *f, double a, double b = 0, double c = 0) {
 }
 
 // Checks a finished solve; appends what it broke to `bad`.
-void check_rules(const Scene &s, const Settings &set, int control, double value,
-                 const Outcome &o, std::vector<std::string> &bad) {
+void check_rules(const Scene &s, const Settings &set, int control, double value, const Outcome &o,
+                 std::vector<std::string> &bad) {
   if (o.status != ASP_OK) {
     bad.push_back("solve returned status " + std::to_string(o.status) + ": " + o.message);
     return;
@@ -426,7 +433,8 @@ void check_rules(const Scene &s, const Settings &set, int control, double value,
     bad.push_back("iteration limit reported before the limit");
   if (!std::isfinite(o.error)) bad.push_back("final error not finite");
   if (!o.scalars_finite) bad.push_back("a scalar result is not finite");
-  if (!all_finite(o.p) || !all_finite(o.g) || !all_finite(o.u)) bad.push_back("a field is not finite");
+  if (!all_finite(o.p) || !all_finite(o.g) || !all_finite(o.u))
+    bad.push_back("a field is not finite");
   if (!bad.empty()) return;
 
   // The state is consistent whatever the ending: g = u - h + max h - delta.
@@ -443,8 +451,10 @@ void check_rules(const Scene &s, const Settings &set, int control, double value,
   if (o.reason != ASP_TERMINATION_CONVERGED) return;
   if (s.slope_pressure > 0 && s.kind != Kind::user_soft && s.kind != Kind::user_hard &&
       std::fabs(o.pref_library - s.slope_pressure) > 1e-9 * s.slope_pressure)
-    bad.push_back(fmt("reference pressure %.12g, documented E* h'rms/2 = %.12g", o.pref_library, s.slope_pressure));
-  if (!(o.error <= set.tolerance)) bad.push_back(fmt("converged with error %g > tolerance", o.error));
+    bad.push_back(fmt("reference pressure %.12g, documented E* h'rms/2 = %.12g", o.pref_library,
+                      s.slope_pressure));
+  if (!(o.error <= set.tolerance))
+    bad.push_back(fmt("converged with error %g > tolerance", o.error));
 
   // The control is met.
   if (control == ASP_CONTROL_PENETRATION && std::fabs(o.delta - value) > 1e-12 * std::fabs(value))
@@ -490,14 +500,17 @@ void check_rules(const Scene &s, const Settings &set, int control, double value,
         const double allowed = tol_p + std::fabs(d2phi(s, o.g[i])) * gap_round;
         worst_open = std::max(worst_open, std::fabs(o.p[i] + dphi(s, o.g[i])) - allowed);
       }
-    if (worst_open > 0) bad.push_back(fmt("open pixel off balance by %g beyond its allowance", worst_open));
+    if (worst_open > 0)
+      bad.push_back(fmt("open pixel off balance by %g beyond its allowance", worst_open));
   }
   if (!s.hard_wall()) {
     // A soft wall's pressure is the potential's, -phi'(g), at equilibrium (on any substrate).
     double worst = 0;
     for (int64_t i = 0; i < s.n(); ++i)
-      worst = std::max(worst, std::fabs(o.p[i] + dphi(s, o.g[i])) - tol_p - std::fabs(d2phi(s, o.g[i])) * gap_round);
-    if (worst > 0) bad.push_back(fmt("pressure differs from -phi'(g) by %g beyond its allowance", worst));
+      worst = std::max(worst, std::fabs(o.p[i] + dphi(s, o.g[i])) - tol_p -
+                                  std::fabs(d2phi(s, o.g[i])) * gap_round);
+    if (worst > 0)
+      bad.push_back(fmt("pressure differs from -phi'(g) by %g beyond its allowance", worst));
   }
   if (!s.free_substrate) {
     const std::vector<double> ku = apply_stiffness(s, o.k0, o.u);
@@ -510,10 +523,14 @@ void check_rules(const Scene &s, const Settings &set, int control, double value,
       }
     }
     if (verbose)
-      std::fprintf(stderr, "      balance: p_ref %g (library %g), tol_p %g, |Ku - p| %g, |Ku + phi'| %g beyond allowances\n",
+      std::fprintf(stderr,
+                   "      balance: p_ref %g (library %g), tol_p %g, |Ku - p| %g, |Ku + phi'| %g "
+                   "beyond allowances\n",
                    o.pref, o.pref_library, tol_p, worst_el, worst_soft);
-    if (worst_el > 0) bad.push_back(fmt("pressure differs from K u by %g beyond %g", worst_el + tol_p, tol_p));
-    if (worst_soft > 0) bad.push_back(fmt("K u + phi'(g) off balance by %g beyond its allowance", worst_soft));
+    if (worst_el > 0)
+      bad.push_back(fmt("pressure differs from K u by %g beyond %g", worst_el + tol_p, tol_p));
+    if (worst_soft > 0)
+      bad.push_back(fmt("K u + phi'(g) off balance by %g beyond its allowance", worst_soft));
   }
 }
 
@@ -530,7 +547,7 @@ using Oracle = std::function<void(const Scene &, const Settings &, const Step &,
 
 struct Case {
   std::string name;
-  std::string checks;   // what the oracle is, for the document
+  std::string checks;  // what the oracle is, for the document
   Scene scene;
   std::vector<Step> steps;
   bool pairs = false;   // warm starts from every other step (and a cold start for each)
@@ -600,7 +617,8 @@ const Listed kKnownDefects[] = {
 
 const Listed *find(const Listed *list, size_t n, const std::string &scene, const char *column) {
   for (size_t i = 0; i < n; ++i)
-    if (list[i].scene != nullptr && scene == list[i].scene && std::strcmp(column, list[i].column) == 0)
+    if (list[i].scene != nullptr && scene == list[i].scene &&
+        std::strcmp(column, list[i].column) == 0)
       return &list[i];
   return nullptr;
 }
@@ -650,7 +668,8 @@ Oracle westergaard(double h0, double lambda, int64_t n_period, bool along_y = fa
       for (int64_t j = 0; j < s.ny; ++j)
         for (int64_t i = 0; i < s.nx; ++i) {
           const double x = along_y ? j * s.ly / s.ny : i * s.lx / s.nx;
-          worst = std::max(worst, std::fabs(o.p[i + s.nx * j] - o.mean_p - pstar * std::cos(2 * kPi * x / lambda)));
+          worst = std::max(worst, std::fabs(o.p[i + s.nx * j] - o.mean_p -
+                                            pstar * std::cos(2 * kPi * x / lambda)));
         }
       if (worst > 10 * set.tolerance * o.pref + 1e-9 * pstar)
         bad.push_back(fmt("Westergaard full contact: pressure off by %g (p* %g)", worst, pstar));
@@ -658,11 +677,13 @@ Oracle westergaard(double h0, double lambda, int64_t n_period, bool along_y = fa
     }
     const double a = lambda / kPi * std::asin(std::sqrt(std::max(o.mean_p, 0.0) / pstar));
     if (verbose)
-      std::fprintf(stderr, "      Westergaard: contact %g - theory %g = %.3g pixels; crest %g, theory %g\n",
+      std::fprintf(stderr,
+                   "      Westergaard: contact %g - theory %g = %.3g pixels; crest %g, theory %g\n",
                    o.contact, 2 * a / lambda, (o.contact - 2 * a / lambda) * n_period, o.p[0],
                    o.mean_p > 0 ? 2 * o.mean_p / std::sin(kPi * a / lambda) : 0.0);
     if (std::fabs(o.contact - 2 * a / lambda) > 2.0 / n_period)
-      bad.push_back(fmt("Westergaard: contact %g, theory %g (pbar/p* %g)", o.contact, 2 * a / lambda, o.mean_p / pstar));
+      bad.push_back(fmt("Westergaard: contact %g, theory %g (pbar/p* %g)", o.contact,
+                        2 * a / lambda, o.mean_p / pstar));
     if (o.mean_p > 1e-3 * pstar) {
       const double crest = 2 * o.mean_p / std::sin(kPi * a / lambda);
       if (std::fabs(o.p[0] - crest) > 0.01 * crest)
@@ -681,8 +702,9 @@ Oracle single_mode_full() {
     double worst = 0;
     for (int64_t j = 0; j < s.ny; ++j)
       for (int64_t i = 0; i < s.nx; ++i)
-        worst = std::max(worst, std::fabs(o.p[i + s.nx * j] - o.mean_p -
-                                          amp * std::cos(2 * kPi * i / s.nx) * std::cos(2 * kPi * j / s.ny)));
+        worst = std::max(
+            worst, std::fabs(o.p[i + s.nx * j] - o.mean_p -
+                             amp * std::cos(2 * kPi * i / s.nx) * std::cos(2 * kPi * j / s.ny)));
     if (o.contact != 1.0) bad.push_back(fmt("single mode: contact %g, not full", o.contact));
     if (worst > 10 * set.tolerance * o.pref + 1e-9 * amp)
       bad.push_back(fmt("single mode: pressure off by %g (amplitude %g)", worst, amp));
@@ -700,7 +722,8 @@ Oracle flat() {
     };
     const double tp = 10 * set.tolerance * o.pref + 1e-12 * std::fabs(o.mean_p);
     if (spread(o.p) > tp) bad.push_back(fmt("flat: pressure not uniform (spread %g)", spread(o.p)));
-    if (spread(o.g) > 1e-12 * (std::fabs(o.mean_gap) + std::fabs(o.delta)) + 10 * set.tolerance * o.pref / std::max(o.k0, 1e-300))
+    if (spread(o.g) > 1e-12 * (std::fabs(o.mean_gap) + std::fabs(o.delta)) +
+                          10 * set.tolerance * o.pref / std::max(o.k0, 1e-300))
       bad.push_back(fmt("flat: gap not uniform (spread %g)", spread(o.g)));
     if (s.kind != Kind::hard) return;
     double pe = 0, ge = 0;
@@ -715,7 +738,8 @@ Oracle flat() {
     }
     if (std::fabs(o.mean_p - pe) > tp + 1e-12 * std::fabs(pe))
       bad.push_back(fmt("flat: pressure %g, exact %g", o.mean_p, pe));
-    if (std::fabs(o.mean_gap - ge) > 1e-12 * std::fabs(ge) + 10 * set.tolerance * o.pref / std::max(o.k0, 1e-300))
+    if (std::fabs(o.mean_gap - ge) >
+        1e-12 * std::fabs(ge) + 10 * set.tolerance * o.pref / std::max(o.k0, 1e-300))
       bad.push_back(fmt("flat: gap %g, exact %g", o.mean_gap, ge));
   };
 }
@@ -730,7 +754,8 @@ Oracle single_pixel(int64_t apex) {
   return [=](const Scene &s, const Settings &set, const Step &step, const Outcome &o,
              std::vector<std::string> &bad) {
     const double n = static_cast<double>(s.n());
-    if (o.contact != 1 / n) bad.push_back(fmt("single pixel: contact fraction %g, not 1/N = %g", o.contact, 1 / n));
+    if (o.contact != 1 / n)
+      bad.push_back(fmt("single pixel: contact fraction %g, not 1/N = %g", o.contact, 1 / n));
     double expected;
     if (step.control == ASP_CONTROL_MEAN_PRESSURE) {
       expected = n * step.value;
@@ -753,8 +778,11 @@ Oracle hertz(double radius, double tolerance) {
              std::vector<std::string> &bad) {
     const double f = 4.0 / 3 * s.modulus * std::sqrt(radius) * std::pow(step.value, 1.5);
     const double got = o.mean_p * s.lx * s.ly;
-    if (verbose) std::fprintf(stderr, "      Hertz: force %g, theory %g, relative %.3g\n", got, f, got / f - 1);
-    if (std::fabs(got - f) > tolerance * f) bad.push_back(fmt("Hertz: force %g, theory %g", got, f));
+    if (verbose)
+      std::fprintf(stderr, "      Hertz: force %g, theory %g, relative %.3g\n", got, f,
+                   got / f - 1);
+    if (std::fabs(got - f) > tolerance * f)
+      bad.push_back(fmt("Hertz: force %g, theory %g", got, f));
   };
 }
 
@@ -845,7 +873,8 @@ void soft_wall(Scene &s, double rc, double rho, double tabor = -1) {
     s.gr = 2100 * rc;
     s.ga = 2.05 * rc;
   } else {
-    const double ratio = 2100 / 2.05, w = std::sqrt(std::pow(tabor, 3) * s.modulus * s.modulus * std::pow(rho, 3) / rc);
+    const double ratio = 2100 / 2.05,
+                 w = std::sqrt(std::pow(tabor, 3) * s.modulus * s.modulus * std::pow(rho, 3) / rc);
     s.ga = 4 * ratio * w;
     s.gr = ratio * s.ga;
   }
@@ -853,7 +882,8 @@ void soft_wall(Scene &s, double rc, double rho, double tabor = -1) {
 
 // The penetration of table4.toml: the crest pressed 5 % of the height range past the well.
 double table4_penetration(const Scene &s) {
-  const double range = *std::max_element(s.h.begin(), s.h.end()) - *std::min_element(s.h.begin(), s.h.end());
+  const double range =
+      *std::max_element(s.h.begin(), s.h.end()) - *std::min_element(s.h.begin(), s.h.end());
   const double well = s.rr * std::log(2 * s.gr / s.ga);
   return 0.05 * range - well;
 }
@@ -942,7 +972,8 @@ std::vector<Case> make_cases() {
     c.scene.ny = 37;
     c.scene.h.resize(31 * 37);
     for (int j = 0; j < 37; ++j)
-      for (int i = 0; i < 31; ++i) c.scene.h[i + 31 * j] = h0 * std::cos(2 * kPi * i / 31) * std::cos(2 * kPi * j / 37);
+      for (int i = 0; i < 31; ++i)
+        c.scene.h[i + 31 * j] = h0 * std::cos(2 * kPi * i / 31) * std::cos(2 * kPi * j / 37);
     c.steps = {{ASP_CONTROL_MEAN_PRESSURE, 3 * pstar}};
     c.oracle = single_mode_full();
     add(c);
@@ -1045,9 +1076,11 @@ std::vector<Case> make_cases() {
     c.scene = square(64, 1.0);
     asp_grid *g = nullptr;
     if (asp_grid_create_2d(64, 64, 1.0, 1.0, &g) == ASP_OK)
-      asp_topography_self_affine(g, 0.8, 1.0, 1.0, 4.0 / 64, ASP_RMS_SLOPE, 0.1, 1, c.scene.h.data(), 64 * 64);
+      asp_topography_self_affine(g, 0.8, 1.0, 1.0, 4.0 / 64, ASP_RMS_SLOPE, 0.1, 1,
+                                 c.scene.h.data(), 64 * 64);
     asp_grid_destroy(g);
-    const double range = *std::max_element(c.scene.h.begin(), c.scene.h.end()) - *std::min_element(c.scene.h.begin(), c.scene.h.end());
+    const double range = *std::max_element(c.scene.h.begin(), c.scene.h.end()) -
+                         *std::min_element(c.scene.h.begin(), c.scene.h.end());
     c.unique = true;
     c.checks = "all converged solvers agree";
     c.name = "rough 64 x 64, about 10 % contact (penetration)";
@@ -1104,7 +1137,8 @@ std::vector<Case> make_cases() {
     for (double mu : tabors) {
       Case c;
       c.name = fmt("adhesive sphere, Tabor %g", mu);
-      c.checks = mu <= 0.1 ? "constraints, force balance; both solvers agree" : "constraints and independent force balance";
+      c.checks = mu <= 0.1 ? "constraints, force balance; both solvers agree"
+                           : "constraints and independent force balance";
       c.scene = paraboloid(32, 1.0, 1.0);
       c.scene.kind = Kind::adhesive;
       c.scene.rho = 1.06 * px;
@@ -1123,7 +1157,8 @@ std::vector<Case> make_cases() {
     c.pairs = true;
     c.unique = true;
     c.steps.clear();
-    for (double f : {-0.5, 0.0, 0.5, 1.0, 2.0}) c.steps.push_back({ASP_CONTROL_PENETRATION, f * delta});
+    for (double f : {-0.5, 0.0, 0.5, 1.0, 2.0})
+      c.steps.push_back({ASP_CONTROL_PENETRATION, f * delta});
     add(c);
     c.pairs = false;
     c.name = "adhesive sphere, pulled far apart";
@@ -1215,9 +1250,11 @@ std::vector<Case> make_cases() {
       c.settings.max_iterations = 20000;
       c.name = "soft wall, > 99 % contact";
       c.checks = "independent force balance; contact above 99 %";
-      const double range = *std::max_element(base.h.begin(), base.h.end()) - *std::min_element(base.h.begin(), base.h.end());
+      const double range = *std::max_element(base.h.begin(), base.h.end()) -
+                           *std::min_element(base.h.begin(), base.h.end());
       c.steps = {{ASP_CONTROL_PENETRATION, 1.5 * range}};
-      c.oracle = [](const Scene &, const Settings &, const Step &, const Outcome &o, std::vector<std::string> &bad) {
+      c.oracle = [](const Scene &, const Settings &, const Step &, const Outcome &o,
+                    std::vector<std::string> &bad) {
         if (o.contact <= 0.99) bad.push_back(fmt("contact %g, not above 99 %%", o.contact));
       };
       add(c);
@@ -1323,7 +1360,8 @@ std::vector<Case> make_cases() {
       {
         asp_grid *g = nullptr;
         if (asp_grid_create_1d(127, 127.0, &g) == ASP_OK)
-          asp_topography_self_affine(g, 0.8, 127.0, 127.0, 4.0, ASP_RMS_SLOPE, 0.1, 1, c.scene.h.data(), 127);
+          asp_topography_self_affine(g, 0.8, 127.0, 127.0, 4.0, ASP_RMS_SLOPE, 0.1, 1,
+                                     c.scene.h.data(), 127);
         asp_grid_destroy(g);
       }
       soft_wall(c.scene, rc, 0.262144);
@@ -1338,7 +1376,8 @@ std::vector<Case> make_cases() {
         sc.h.resize(nx * ny);
         for (int64_t j = 0; j < ny; ++j)
           for (int64_t i = 0; i < nx; ++i) {
-            const double x = (i - nx / 2) / static_cast<double>(nx), y = (j - ny / 2) / static_cast<double>(nx);
+            const double x = (i - nx / 2) / static_cast<double>(nx),
+                         y = (j - ny / 2) / static_cast<double>(nx);
             sc.h[i + nx * j] = -(x * x + y * y) / 2;
           }
         soft_wall(sc, 1.0, 0.5 / nx, 1.0);
@@ -1406,8 +1445,10 @@ std::vector<Case> make_cases() {
       c.scene = base;
       soft_wall(c.scene, rc, 0.262144);
       c.scene.ga = 0;
-      const double range = *std::max_element(base.h.begin(), base.h.end()) - *std::min_element(base.h.begin(), base.h.end());
-      for (double f : {-0.1, 0.02, 0.1, 0.3, 1.2}) c.steps.push_back({ASP_CONTROL_PENETRATION, f * range});
+      const double range = *std::max_element(base.h.begin(), base.h.end()) -
+                           *std::min_element(base.h.begin(), base.h.end());
+      for (double f : {-0.1, 0.02, 0.1, 0.3, 1.2})
+        c.steps.push_back({ASP_CONTROL_PENETRATION, f * range});
       c.pairs = true;
       c.unique = true;
       c.settings.tolerance = 1e-9;
@@ -1418,7 +1459,8 @@ std::vector<Case> make_cases() {
       c.scene = base;
       soft_wall(c.scene, rc, 0.262144);
       c.steps.clear();
-      for (double f : {-0.1, 0.0, 0.05, 0.1, 0.2, 0.1, 0.05, 0.0, -0.1}) c.steps.push_back({ASP_CONTROL_PENETRATION, f * range});
+      for (double f : {-0.1, 0.0, 0.05, 0.1, 0.2, 0.1, 0.05, 0.0, -0.1})
+        c.steps.push_back({ASP_CONTROL_PENETRATION, f * range});
       c.pairs = false;
       c.chain = true;
       c.unique = false;
@@ -1430,14 +1472,16 @@ std::vector<Case> make_cases() {
     c.name = "Westergaard, warm starts from every step";
     c.checks = "each step from each other step: sin^2 law and the cold-start result";
     c.scene = line(64, 1.0, h0);
-    for (double d : {-0.005, 0.002, 0.01, 0.018, 0.03}) c.steps.push_back({ASP_CONTROL_PENETRATION, d});
+    for (double d : {-0.005, 0.002, 0.01, 0.018, 0.03})
+      c.steps.push_back({ASP_CONTROL_PENETRATION, d});
     c.pairs = true;
     c.unique = true;
     c.oracle = westergaard(h0, 1.0, 64);
     add(c);
     c.name = "Westergaard, warm starts (mean pressure)";
     c.steps.clear();
-    for (double f : {0.0, 0.05, 0.5, 0.95, 1.5}) c.steps.push_back({ASP_CONTROL_MEAN_PRESSURE, f * pstar});
+    for (double f : {0.0, 0.05, 0.5, 0.95, 1.5})
+      c.steps.push_back({ASP_CONTROL_MEAN_PRESSURE, f * pstar});
     add(c);
     c.name = "adhesive double sinewave, load and unload";
     c.checks = "constraints and independent force balance at each step";
@@ -1448,7 +1492,8 @@ std::vector<Case> make_cases() {
     c.scene.w = 0.03;
     c.scene.rho = 0.0153;
     c.steps.clear();
-    for (double d : {-0.04, 0.0, 0.05, 0.1, 0.2, 0.1, 0.05, 0.0, -0.04}) c.steps.push_back({ASP_CONTROL_PENETRATION, d});
+    for (double d : {-0.04, 0.0, 0.05, 0.1, 0.2, 0.1, 0.05, 0.0, -0.04})
+      c.steps.push_back({ASP_CONTROL_PENETRATION, d});
     c.pairs = false;
     c.chain = true;
     c.unique = false;
@@ -1561,7 +1606,9 @@ Cell run_cell(Case &cs, const Column &col, const Cell *baseline_cell, const Outc
     return cell;
   }
 
-  const bool listed = find(kExpectedUnconverged, sizeof kExpectedUnconverged / sizeof kExpectedUnconverged[0], cs.name, col.label) != nullptr;
+  const bool listed =
+      find(kExpectedUnconverged, sizeof kExpectedUnconverged / sizeof kExpectedUnconverged[0],
+           cs.name, col.label) != nullptr;
   int converged = 0, total = 0;
   int64_t max_it = 0;
   std::vector<int> reasons;
@@ -1577,12 +1624,17 @@ Cell run_cell(Case &cs, const Column &col, const Cell *baseline_cell, const Outc
       if (cs.no_equilibrium) bad.push_back("converged where no equilibrium exists");
       if (bad.empty() && cs.oracle) cs.oracle(s, cs.settings, step, o, bad);
     } else if (o.status == ASP_OK && !cs.no_equilibrium && !listed) {
-      bad.push_back(std::string("did not converge: ") + reason_name(o.reason) + fmt(" after %g iterations, error %g", static_cast<double>(o.iterations), o.error));
+      bad.push_back(
+          std::string("did not converge: ") + reason_name(o.reason) +
+          fmt(" after %g iterations, error %g", static_cast<double>(o.iterations), o.error));
     }
     if (verbose)
-      std::fprintf(stderr, "    %s | %s %s: %s, %lld it, error %.3g, pbar %.10g, delta %.10g, gap %.6g, contact %.6g\n",
-                   cs.name.c_str(), col.label, label, o.status == ASP_OK ? reason_name(o.reason) : "error",
-                   static_cast<long long>(o.iterations), o.error, o.mean_p, o.delta, o.mean_gap, o.contact);
+      std::fprintf(
+          stderr,
+          "    %s | %s %s: %s, %lld it, error %.3g, pbar %.10g, delta %.10g, gap %.6g, contact "
+          "%.6g\n",
+          cs.name.c_str(), col.label, label, o.status == ASP_OK ? reason_name(o.reason) : "error",
+          static_cast<long long>(o.iterations), o.error, o.mean_p, o.delta, o.mean_gap, o.contact);
     for (auto &b : bad) cell.failures.push_back(std::string(label) + b);
     return conv;
   };
@@ -1596,7 +1648,9 @@ Cell run_cell(Case &cs, const Column &col, const Cell *baseline_cell, const Outc
     Outcome after;
     read_state(s, hd.system, after);
     cell.text = st == ASP_ERR_CALLBACK ? "error: callback" : "status " + std::to_string(st);
-    if (st != ASP_ERR_CALLBACK) cell.failures.push_back("solve returned " + std::to_string(st) + ", not ASP_ERR_CALLBACK: " + msg);
+    if (st != ASP_ERR_CALLBACK)
+      cell.failures.push_back("solve returned " + std::to_string(st) +
+                              ", not ASP_ERR_CALLBACK: " + msg);
     if (msg.find("callback") == std::string::npos && msg.find("potential") == std::string::npos)
       cell.failures.push_back("the message does not name the callback: " + msg);
     if (before.p != after.p || before.g != after.g || before.delta != after.delta)
@@ -1611,7 +1665,8 @@ Cell run_cell(Case &cs, const Column &col, const Cell *baseline_cell, const Outc
     for (size_t k = 0; k < cs.steps.size(); ++k) {
       asp_system_reset(hd.system);
       cold[k] = solve(solver, s, hd.system, cs.steps[k].control, cs.steps[k].value);
-      cold_ok[k] = finish_step(cs.steps[k], cold[k], fmt("cold step %g: ", static_cast<double>(k)).c_str());
+      cold_ok[k] =
+          finish_step(cs.steps[k], cold[k], fmt("cold step %g: ", static_cast<double>(k)).c_str());
     }
     for (size_t j = 0; j < cs.steps.size(); ++j)
       for (size_t k = 0; k < cs.steps.size(); ++k) {
@@ -1619,7 +1674,8 @@ Cell run_cell(Case &cs, const Column &col, const Cell *baseline_cell, const Outc
         asp_system_reset(hd.system);
         solve(solver, s, hd.system, cs.steps[j].control, cs.steps[j].value);
         const Outcome o = solve(solver, s, hd.system, cs.steps[k].control, cs.steps[k].value);
-        const std::string label = fmt("step %g from step %g: ", static_cast<double>(k), static_cast<double>(j));
+        const std::string label =
+            fmt("step %g from step %g: ", static_cast<double>(k), static_cast<double>(j));
         if (finish_step(cs.steps[k], o, label.c_str()) && cold_ok[k] && cs.unique) {
           std::vector<std::string> bad;
           compare(s, cold[k], o, 1, 1, "cold start", bad);
@@ -1636,7 +1692,8 @@ Cell run_cell(Case &cs, const Column &col, const Cell *baseline_cell, const Outc
     cell.first = o;
     cell.has_first = o.status == ASP_OK && o.reason == ASP_TERMINATION_CONVERGED;
     if (cell.has_first && baseline_cell != nullptr && baseline_cell->has_first)
-      compare(s, baseline_cell->first, o, cs.length_scale, cs.modulus_scale, "the same scene in other units", cell.failures);
+      compare(s, baseline_cell->first, o, cs.length_scale, cs.modulus_scale,
+              "the same scene in other units", cell.failures);
     if (cell.has_first && cs.unique && row_first != nullptr)
       compare(s, *row_first, o, 1, 1, "the first solver of the row", cell.failures);
   }
@@ -1671,15 +1728,18 @@ std::vector<std::string> self_test(const Case &cs, const Cell &cell, const Cell 
   const Step &step = cs.steps.front();
   const Outcome &o = cell.first;
   const double n = static_cast<double>(s.n());
-  // 1. One pixel's pressure off by 1e-4 (or 1000 tolerances) of the pressure scale (an open pixel where there is
-  // one, which the free substrate's checks reach too).
+  // 1. One pixel's pressure off by 1e-4 (or 1000 tolerances) of the pressure scale (an open pixel
+  // where there is one, which the free substrate's checks reach too).
   {
     Outcome x = o;
     size_t at = 0;
     double best = -1;
     for (size_t i = 0; i < x.p.size(); ++i) {
       const double key = s.hard_wall() ? x.g[i] : std::fabs(x.p[i]);
-      if (key > best) { best = key; at = i; }
+      if (key > best) {
+        best = key;
+        at = i;
+      }
     }
     double pmax = 0;
     for (double v : x.p) pmax = std::max(pmax, std::fabs(v));
@@ -1701,7 +1761,8 @@ std::vector<std::string> self_test(const Case &cs, const Cell &cell, const Cell 
   // pixel's pressure 1 % of p_ref up; (D) the mean pressure 10 % and 1 % of p_ref up; (E) the
   // mean gap and the penetration 10 % off. The oracle must reject at least one (each oracle
   // checks only some of these quantities), a comparison both (A) and (D).
-  const double hr = *std::max_element(s.h.begin(), s.h.end()) - *std::min_element(s.h.begin(), s.h.end());
+  const double hr =
+      *std::max_element(s.h.begin(), s.h.end()) - *std::min_element(s.h.begin(), s.h.end());
   std::vector<Outcome> perturbed(5, o);
   perturbed[0].contact += (o.contact + 3 / n <= 1 ? 3 / n : -3 / n);
   for (double &v : perturbed[1].p) v = 1.1 * v + 0.01 * o.pref;
@@ -1722,11 +1783,13 @@ std::vector<std::string> self_test(const Case &cs, const Cell &cell, const Cell 
     for (int k : {0, 3}) {
       std::vector<std::string> bad;
       compare(s, a, perturbed[k], ls, ms, "", bad);
-      if (bad.empty()) missed.push_back(std::string(what) + " accepts perturbation " + "AD"[k == 3]);
+      if (bad.empty())
+        missed.push_back(std::string(what) + " accepts perturbation " + "AD"[k == 3]);
     }
   };
   if (baseline_cell != nullptr && baseline_cell->has_first)
-    compare_rejects(baseline_cell->first, cs.length_scale, cs.modulus_scale, "the comparison with the unit scene");
+    compare_rejects(baseline_cell->first, cs.length_scale, cs.modulus_scale,
+                    "the comparison with the unit scene");
   if (cs.unique && row_first != nullptr && row_first != &cell.first)
     compare_rejects(*row_first, 1, 1, "the comparison between solvers");
   return missed;
@@ -1738,12 +1801,17 @@ int main(int argc, char **argv) {
   bool markdown = false;
   std::string only;
   for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--markdown") == 0) markdown = true;
-    else if (std::strcmp(argv[i], "--verbose") == 0) verbose = true;
-    else if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc) only = argv[++i];
-    else if (std::strcmp(argv[i], "--stall-window") == 0 && i + 1 < argc) stall_override = std::atoll(argv[++i]);
+    if (std::strcmp(argv[i], "--markdown") == 0)
+      markdown = true;
+    else if (std::strcmp(argv[i], "--verbose") == 0)
+      verbose = true;
+    else if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc)
+      only = argv[++i];
+    else if (std::strcmp(argv[i], "--stall-window") == 0 && i + 1 < argc)
+      stall_override = std::atoll(argv[++i]);
     else {
-      std::fprintf(stderr, "usage: %s [--markdown] [--verbose] [--only TEXT] [--stall-window N]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--markdown] [--verbose] [--only TEXT] [--stall-window N]\n",
+                   argv[0]);
       return 2;
     }
   }
@@ -1794,19 +1862,23 @@ int main(int argc, char **argv) {
       cells[r].push_back(run_cell(cases[r], kColumns[c], bc, row_first));
       const Cell &cell = cells[r].back();
       if (row_first == nullptr && cell.has_first) row_first = &cells[r].back().first;
-      const Listed *defect = find(kKnownDefects, sizeof kKnownDefects / sizeof kKnownDefects[0], cases[r].name, kColumns[c].label);
+      const Listed *defect = find(kKnownDefects, sizeof kKnownDefects / sizeof kKnownDefects[0],
+                                  cases[r].name, kColumns[c].label);
       if (defect != nullptr) {
         ++defects;
         if (cell.failures.empty()) {
           ++failures;
-          report.push_back(cases[r].name + " | " + kColumns[c].label + ": listed as a known defect but passes; remove it from kKnownDefects");
+          report.push_back(cases[r].name + " | " + kColumns[c].label +
+                           ": listed as a known defect but passes; remove it from kKnownDefects");
         } else {
           cells[r].back().text = "DEFECT: " + cell.text;
-          report.push_back(cases[r].name + " | " + kColumns[c].label + ": known defect (" + defect->why + "): " + cell.failures.front());
+          report.push_back(cases[r].name + " | " + kColumns[c].label + ": known defect (" +
+                           defect->why + "): " + cell.failures.front());
         }
       } else if (!cell.failures.empty()) {
         ++failures;
-        for (const auto &f : cell.failures) report.push_back(cases[r].name + " | " + kColumns[c].label + ": " + f);
+        for (const auto &f : cell.failures)
+          report.push_back(cases[r].name + " | " + kColumns[c].label + ": " + f);
       }
     }
   }
@@ -1824,8 +1896,8 @@ int main(int argc, char **argv) {
     if (printed == 0) std::remove(capture_path);
     if (printed != 0) {
       ++failures;
-      report.push_back("the library printed " + std::to_string(printed) + " bytes while solving (in " +
-                       capture_path + ")");
+      report.push_back("the library printed " + std::to_string(printed) +
+                       " bytes while solving (in " + capture_path + ")");
     }
   }
 #endif
@@ -1845,13 +1917,15 @@ int main(int argc, char **argv) {
       if (!cell.has_first || !cell.failures.empty()) continue;
       if (row_first == nullptr) row_first = &cell.first;
       ++self_tests;
-      for (const auto &m : self_test(cases[r], cell, base != nullptr ? &cells[base_row][c] : nullptr, row_first)) {
+      for (const auto &m :
+           self_test(cases[r], cell, base != nullptr ? &cells[base_row][c] : nullptr, row_first)) {
         ++failures;
         report.push_back(cases[r].name + " | " + kColumns[c].label + ": a check cannot fail: " + m);
       }
     }
   }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   if (markdown) {
     std::printf("| scene | checks |");
@@ -1871,7 +1945,8 @@ int main(int argc, char **argv) {
     for (const auto &l : kKnownDefects) std::printf("- %s, `%s`: %s.\n", l.scene, l.column, l.why);
   }
   for (const auto &line : report) std::fprintf(stderr, "%s\n", line.c_str());
-  std::fprintf(stderr, "%zu scenes x %d solvers: %d failures, %d known defects, %d cells "
+  std::fprintf(stderr,
+               "%zu scenes x %d solvers: %d failures, %d known defects, %d cells "
                "shown to reject a perturbed state, %.1f s\n",
                cases.size(), kColumnCount, failures, defects, self_tests, seconds);
   return failures == 0 ? 0 : 1;
