@@ -396,8 +396,11 @@ struct Settings {
   int64_t stall_window = -1;  // -1: the default
 };
 
+int64_t solves = 0;  // solves run, for the summary
+
 Outcome solve(asp_solver *solver, const Scene &s, asp_system *sys, int control, double value) {
   Outcome o;
+  ++solves;
   o.status = asp_solver_solve(solver, sys, control, value);
   o.message = asp_last_error_message();
   if (o.status == ASP_OK) {
@@ -1946,8 +1949,9 @@ int main(int argc, char **argv) {
   }
   for (const auto &line : report) std::fprintf(stderr, "%s\n", line.c_str());
   std::fprintf(stderr,
-               "%zu scenes x %d solvers: %d failures, %d known defects, %d cells "
+               "%zu scenes x %d solvers, %lld solves: %d failures, %d known defects, %d cells "
                "shown to reject a perturbed state, %.1f s\n",
-               cases.size(), kColumnCount, failures, defects, self_tests, seconds);
+               cases.size(), kColumnCount, static_cast<long long>(solves), failures, defects,
+               self_tests, seconds);
   return failures == 0 ? 0 : 1;
 }
