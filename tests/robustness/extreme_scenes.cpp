@@ -286,7 +286,8 @@ struct Outcome {
   int reason = 0;
   int64_t iterations = 0;
   double error = 0, mean_p = 0, delta = 0, mean_gap = 0, contact = 0, pref = 0, k0 = 0;
-  double pref_library = 0;  // ASP_REFERENCE_PRESSURE; pref is this file's own (see read_state)
+  std::string history_problem;  // "" when the history agrees with the report
+  double pref_library = 0;      // ASP_REFERENCE_PRESSURE; pref is this file's own (see read_state)
   double elastic = 0;
   bool scalars_finite = true;
   std::vector<double> p, g, u;
@@ -396,6 +397,12 @@ struct Settings {
   int64_t stall_window = -1;  // -1: the default
 };
 
+std::string fmt(const char *f, double a, double b = 0, double c = 0) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, f, a, b, c);
+  return buf;
+}
+
 int64_t solves = 0;  // solves run, for the summary
 
 Outcome solve(asp_solver *solver, const Scene &s, asp_system *sys, int control, double value) {
@@ -407,6 +414,25 @@ Outcome solve(asp_solver *solver, const Scene &s, asp_system *sys, int control, 
     asp_solver_termination(solver, &o.reason);
     asp_solver_iterations(solver, &o.iterations);
     asp_solver_final_error(solver, &o.error);
+    // The history: one finite row per iteration from the starting point, ending at the
+    // reported error (a breakdown reports the last finite one).
+    int64_t rows = -1;
+    asp_solver_history_length(solver, &rows);
+    std::vector<double> it(rows > 0 ? rows : 0), err(rows > 0 ? rows : 0);
+    if (rows > 0) {
+      asp_solver_get_history(solver, ASP_HISTORY_ITERATION, it.data(), rows);
+      asp_solver_get_history(solver, ASP_HISTORY_ERROR, err.data(), rows);
+    }
+    if (rows != o.iterations + 1)
+      o.history_problem = fmt("history of %g rows after %g iterations", static_cast<double>(rows),
+                              static_cast<double>(o.iterations));
+    else if (it.back() != static_cast<double>(o.iterations))
+      o.history_problem = "the history's last iteration is not the reported one";
+    else if (o.reason != ASP_TERMINATION_BREAKDOWN && err.back() != o.error)
+      o.history_problem =
+          fmt("the history's last error %g is not the reported %g", err.back(), o.error);
+    else if (o.reason != ASP_TERMINATION_BREAKDOWN && !all_finite(err))
+      o.history_problem = "a history error is not finite";
   }
   read_state(s, sys, o, control, value);
   return o;
@@ -415,11 +441,6 @@ Outcome solve(asp_solver *solver, const Scene &s, asp_system *sys, int control, 
 // ------------------------------------------------------------------------------------------
 // The rules every solve must keep
 // ------------------------------------------------------------------------------------------
-std::string fmt(const char *f, double a, double b = 0, double c = 0) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, f, a, b, c);
-  return buf;
-}
 
 // Checks a finished solve; appends what it broke to `bad`.
 void check_rules(const Scene &s, const Settings &set, int control, double value, const Outcome &o,
@@ -434,6 +455,7 @@ void check_rules(const Scene &s, const Settings &set, int control, double value,
   if (o.iterations > set.max_iterations) bad.push_back("more iterations than the limit");
   if (o.reason == ASP_TERMINATION_ITERATION_LIMIT && o.iterations != set.max_iterations)
     bad.push_back("iteration limit reported before the limit");
+  if (!o.history_problem.empty()) bad.push_back(o.history_problem);
   if (!std::isfinite(o.error)) bad.push_back("final error not finite");
   if (!o.scalars_finite) bad.push_back("a scalar result is not finite");
   if (!all_finite(o.p) || !all_finite(o.g) || !all_finite(o.u))
@@ -1578,6 +1600,7 @@ Cell run_cell(Case &cs, const Column &col, const Cell *baseline_cell, const Outc
   if (window >= 0) asp_solver_set_option(solver, "stall_window", static_cast<double>(window));
   if (col.variable != nullptr) asp_solver_set_option_string(solver, "variable", col.variable);
   asp_solver_set_progress(solver, guard_progress, &guard);
+  asp_solver_set_history(solver, 1);
 
   // Refusal: the documented rules, asp_solver_supports and asp_solver_solve agree, and a
   // refused solve leaves the state as it was.
