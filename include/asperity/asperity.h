@@ -181,9 +181,12 @@ ASP_EXPORT int asp_grid_set_fft_planning(asp_grid *grid, int planning);
  * one thread to 1e-12 relative (tested for every solver): sums over the pixels are added in
  * fixed chunks, and the chunks in order, whichever thread did them, so they do not depend on
  * the count; only FFTW's threaded transforms may round differently from its serial ones.
- * The same count gives the same result run after run. Passes and transforms over fewer than
- * 32768 entries run on one thread. A build without threads (ASPERITY_THREADS off) accepts
- * any count and runs on one. */
+ * The same count and the same FFT plans give the same result run after run: with
+ * ASP_FFT_ESTIMATE, or measured plans kept as wisdom (FFTW_MEASURE times candidate plans,
+ * so that a new measurement may pick another, which rounds differently; on strongly
+ * adhesive scenes the iteration counts then move by a few per cent between runs). Passes
+ * and transforms over fewer than 32768 entries run on one thread. A build without threads
+ * (ASPERITY_THREADS off) accepts any count and runs on one. */
 ASP_EXPORT int asp_grid_set_threads(asp_grid *grid, int threads);
 ASP_EXPORT int asp_grid_get_threads(const asp_grid *grid, int *threads);
 
