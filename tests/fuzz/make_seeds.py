@@ -1,0 +1,262 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""Writes the binary seeds of the fuzz corpora: the programs of corpus/c_api/ (in the encoding
+fuzz_c_api.cpp reads) and small .npy arrays with missing points for corpus/npy_reader/. The
+standard library only; the files are committed and the tests do not run this script:
+    python3 tests/fuzz/make_seeds.py
+"""
+import os
+import struct
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+# The table of Input::real() in fuzz_c_api.cpp, by name.
+TABLE = ["0", "-0", "1", "-1", "0.5", "2", "0.1", "1e-3", "1e-8", "1e-12", "10", "1e3", "1e10",
+         "1e-300", "1e300", "max", "-max", "min", "denorm", "inf", "-inf", "nan", "0.8", "0.05",
+         "0.25", "3"]
+
+
+class Program:
+    """The bytes of one input: each method appends one step of the driver's loop."""
+
+    def __init__(self):
+        self.b = bytearray()
+
+    def byte(self, v):
+        self.b.append(v & 0xFF)
+
+    def real(self, v):
+        if isinstance(v, str):
+            self.byte(TABLE.index(v))
+        elif 0 <= v <= 1.61 and abs(v * 100 - round(v * 100)) < 1e-9:
+            self.byte(78 + round(v * 100))
+        else:
+            self.byte(240)
+            self.b += struct.pack(">d", v)
+
+    def grid_2d(self, nx, ny, lx, ly):
+        self.byte(0)            # make_grid
+        self.byte(0)            # 2D
+        self.byte(nx - 1)
+        self.byte(ny - 1)
+        self.byte(1)            # sizes as given
+        self.real(lx)
+        self.real(ly)
+        self.byte(0)            # ASP_FFT_ESTIMATE
+
+    def grid_1d(self, nx, lx):
+        self.byte(0)
+        self.byte(1)            # 1D
+        self.byte(1)            # nx from one byte
+        self.byte(nx - 1)
+        self.byte(1)
+        self.real(lx)
+        self.byte(0)
+
+    def topography(self, which, *args):
+        self.byte(2)
+        self.byte(1)            # the current grid
+        self.byte(5)            # the grid's pixel count
+        self.byte(which)
+        self.byte(1)            # a real array
+        for kind, v in args:
+            if kind == "real":
+                self.real(v)
+            elif kind == "byte":
+                self.byte(v)
+            elif kind == "i64":
+                self.b += struct.pack(">q", v)
+
+    def system(self, slot, periodic, modulus):
+        self.byte(4)
+        self.byte(slot)
+        self.byte(1)            # the current grid
+        self.real(modulus)
+        self.byte(1 if periodic else 0)
+
+    def setting(self, slot, which, *reals):
+        self.byte(5)
+        self.byte(slot)
+        self.byte(which)
+        if which == 0:
+            self.byte(5)        # the right count
+            self.byte(1)        # the heights
+        for v in reals:
+            self.real(v)
+
+    def potential(self, slot, mode, after, hard_wall):
+        self.byte(5)
+        self.byte(slot)
+        self.byte(5)
+        self.byte(mode)
+        self.byte(after)
+        self.byte(1)            # the callback
+        self.byte(1 if hard_wall else 0)
+
+    def solver(self, slot, algorithm):
+        names = ["pk", "bugnicourt", "lbfgsb", "lbfgs", "lbfgs_fourier", "fire",
+                 "fire_mass_weighted", "gfmd"]
+        self.byte(7)
+        self.byte(slot)
+        self.byte(names.index(algorithm))
+
+    def option(self, slot, name, value):
+        options = ["tolerance", "max_iterations", "stall_window", "variable", "memory",
+                   "time_step", "max_time_step", "time_step_growth", "time_step_shrink",
+                   "mixing", "mixing_decay", "delay", "damping"]
+        self.byte(8)
+        self.byte(slot)
+        if name == "variable":
+            self.byte(1)
+            self.byte(options.index(name))
+            self.byte(["pressure", "gap"].index(value))
+        else:
+            self.byte(0)
+            self.byte(options.index(name))
+            self.real(value)
+
+    def history(self, slot):
+        self.byte(8)
+        self.byte(slot)
+        self.byte(5)
+        self.byte(1)
+
+    def cancel_at(self, slot, iteration):
+        self.byte(8)
+        self.byte(slot)
+        self.byte(6)
+        self.byte(1)
+        self.byte(iteration)
+        self.byte(1)
+
+    def solve(self, slot, system_slot, control, value):
+        self.byte(9)
+        self.byte(slot)
+        self.byte(system_slot)
+        self.byte({"mean_pressure": 0, "penetration": 1, "mean_gap": 2}[control])
+        self.real(value)
+
+    def getter(self, which, *bytes_):
+        self.byte(10)
+        self.byte(0)
+        self.byte(1)
+        self.byte(1)
+        self.byte(which)
+        for v in bytes_:
+            self.byte(v)
+
+
+def self_affine(p):
+    p.topography(5, ("real", 0.8), ("real", 1), ("real", 0.25), ("real", 0.1), ("byte", 1),
+                 ("byte", 1), ("real", 0.1), ("i64", 42))
+
+
+def c_api_seeds():
+    seeds = {}
+    p = Program()  # the README's example, small: pk on a self-affine surface
+    p.grid_2d(32, 32, 1, 1)
+    self_affine(p)
+    p.system(0, True, 1)
+    p.setting(0, 0)
+    p.solver(0, "pk")
+    p.history(0)
+    p.option(0, "tolerance", 1e-8)
+    p.solve(0, 0, "mean_pressure", 0.01)
+    p.getter(0, 0)
+    p.getter(2, 5, 4)
+    seeds["pk_self_affine"] = p
+
+    p = Program()  # adhesion on a 1D sinusoid, bugnicourt on the gap, then lbfgsb
+    p.grid_1d(64, 1)
+    p.topography(3, ("byte", 1), ("byte", 0), ("real", 0.1))
+    p.system(1, True, 1)
+    p.setting(1, 0)
+    p.setting(1, 1, 0.01, 0.01)
+    p.solver(0, "bugnicourt")
+    p.option(0, "variable", "gap")
+    p.solve(0, 1, "mean_gap", 0.05)
+    p.solver(1, "lbfgsb")
+    p.option(1, "variable", "gap")
+    p.option(1, "memory", 3)
+    p.solve(1, 1, "penetration", 0.05)
+    seeds["adhesion_1d"] = p
+
+    p = Program()  # a sphere on the soft wall, preconditioned L-BFGS and FIRE
+    p.grid_2d(24, 16, 1, 0.5)
+    p.topography(1, ("real", 0.5))
+    p.system(0, True, 2)
+    p.setting(0, 0)
+    p.setting(0, 2, 0.01, 0.01, 0.001, 0.02)
+    p.solver(0, "lbfgs_fourier")
+    p.solve(0, 0, "mean_pressure", 0.001)
+    p.solver(1, "fire_mass_weighted")
+    p.cancel_at(1, 5)
+    p.solve(1, 0, "penetration", 0.01)
+    seeds["soft_wall_sphere"] = p
+
+    p = Program()  # the free substrate under a paraboloid
+    p.grid_2d(16, 16, 1, 1)
+    p.topography(2, ("real", 2))
+    p.system(1, False, 1)
+    p.setting(1, 0)
+    p.solver(0, "pk")
+    p.solve(0, 1, "penetration", 0.01)
+    p.getter(1, 5, 0)
+    seeds["free_paraboloid"] = p
+
+    p = Program()  # a user potential with the hard wall (lbfgsb), then failing (gfmd, soft)
+    p.grid_2d(8, 8, 1, 1)
+    p.topography(4, ("real", 0.1), ("real", 0.01), ("byte", 4))
+    p.system(0, True, 1)
+    p.setting(0, 0)
+    p.potential(0, 0, 0, True)
+    p.solver(0, "lbfgsb")
+    p.option(0, "variable", "gap")
+    p.solve(0, 0, "penetration", 0.02)
+    p.potential(0, 2, 3, False)
+    p.solver(1, "gfmd")
+    p.solve(1, 0, "penetration", 0.02)
+    seeds["user_potential"] = p
+
+    p = Program()  # Lennard-Jones, plain L-BFGS and FIRE, extreme values
+    p.grid_2d(16, 8, 1, 1)
+    self_affine(p)
+    p.system(0, True, 1)
+    p.setting(0, 0)
+    p.setting(0, 3, 0.001, 0.01)
+    p.solver(0, "lbfgs")
+    p.option(0, "memory", 4)
+    p.solve(0, 0, "penetration", 0.01)
+    p.solver(1, "fire")
+    p.option(1, "time_step", "1e300")
+    p.solve(1, 0, "penetration", "nan")
+    p.setting(0, 6, "1e-300")
+    p.setting(0, 7, "inf")
+    seeds["lennard_jones_extremes"] = p
+    return seeds
+
+
+def npy(shape, values, descr="<f8"):
+    header = "{'descr': '%s', 'fortran_order': False, 'shape': %s, }" % (descr, shape)
+    header += " " * (63 - (10 + len(header)) % 64) + "\n"
+    data = b"".join(struct.pack(descr[0] + "d", v) for v in values)
+    return b"\x93NUMPY\x01\x00" + struct.pack("<H", len(header)) + header.encode() + data
+
+
+def main():
+    for name, program in c_api_seeds().items():
+        with open(os.path.join(HERE, "corpus", "c_api", name), "wb") as f:
+            f.write(program.b)
+    nan = float("nan")
+    arrays = {
+        "hole.npy": npy("(3, 4)", [1, 2, 3, 4, 5, nan, nan, 8, 9, 10, 11, 12]),
+        "all_missing.npy": npy("(2, 2)", [nan] * 4),
+        "huge_shape.npy": npy("(4294967296, 4294967296)", [1.0, 2.0]),
+    }
+    for name, data in arrays.items():
+        with open(os.path.join(HERE, "corpus", "npy_reader", name), "wb") as f:
+            f.write(data)
+
+
+if __name__ == "__main__":
+    main()
