@@ -122,6 +122,14 @@ double sum(const Reductions &reductions, std::int64_t n, Value &&value) {
   return total;
 }
 
+// An OpenMP max reduction starts each lane from "the least representable value", which
+// compilers read as -infinity (GCC) or -DBL_MAX (Clang): a part without a value above it
+// reads -DBL_MAX with the latter. Both are taken as none (-infinity), so that a maximum over
+// no value, or over NaN only, is the same whatever the compiler.
+inline double none_if_lowest(double m) {
+  return m > -std::numeric_limits<double>::max() ? m : -std::numeric_limits<double>::infinity();
+}
+
 // The largest value(i) over all entries (-infinity for none; NaN may be dropped).
 template <class Value>
 double maximum(const Reductions &reductions, std::int64_t n, Value &&value) {
@@ -135,7 +143,7 @@ double maximum(const Reductions &reductions, std::int64_t n, Value &&value) {
           const double v = value(i);
           m = v > m ? v : m;
         }
-        part = m;
+        part = none_if_lowest(m);
       },
       [](double &total, double part) { total = part > total ? part : total; });
   reductions.combine_maxima(&largest, 1);
@@ -176,7 +184,7 @@ std::array<double, K + 1> sums_and_max(const Reductions &reductions, std::int64_
 #pragma omp simd reduction(+ : sum[:K]) reduction(max : max)
         for (std::int64_t i = begin; i < end; ++i) body(i, sum, max);
         for (int k = 0; k < K; ++k) part[k] = sum[k];
-        part[K] = max;
+        part[K] = none_if_lowest(max);
       },
       [](std::array<double, K + 1> &total, const std::array<double, K + 1> &part) {
         for (int k = 0; k < K; ++k) total[k] += part[k];
@@ -233,7 +241,7 @@ std::pair<std::array<double, K>, std::array<double, M>> sums_and_maxima(
 #pragma omp simd reduction(+ : sum[:K]) reduction(max : max[:M])
         for (std::int64_t i = begin; i < end; ++i) body(i, sum, max);
         for (int k = 0; k < K; ++k) part.first[k] = sum[k];
-        for (int m = 0; m < M; ++m) part.second[m] = max[m];
+        for (int m = 0; m < M; ++m) part.second[m] = none_if_lowest(max[m]);
       },
       [](Result &total, const Result &part) {
         for (int k = 0; k < K; ++k) total.first[k] += part.first[k];

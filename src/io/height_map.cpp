@@ -82,9 +82,19 @@ HeightMap read_height_map(const std::string &path, FileFormat format) {
     else
       map = detail::read_x3p(path);
   }
+  // Infinities are refused in every format (the text reader names their line and column):
+  // only NaN marks a missing point.
   map.missing = 0;
-  for (double h : map.heights)
+  for (size_t i = 0; i < map.heights.size(); ++i) {
+    const double h = map.heights[i];
     if (std::isnan(h)) ++map.missing;
+    if (std::isinf(h))
+      throw FileError(path + ": height " + std::to_string(i) + " (x = " +
+                      std::to_string(static_cast<int64_t>(i) % std::max<int64_t>(map.nx, 1)) +
+                      ", y = " +
+                      std::to_string(static_cast<int64_t>(i) / std::max<int64_t>(map.nx, 1)) +
+                      ") is not finite (only nan marks a missing point)");
+  }
   return map;
 }
 

@@ -62,13 +62,27 @@ int64_t fill_missing(HeightMap &map) {
     throw FileError("every one of the " + std::to_string(m) +
                     " heights is missing (NaN): nothing to fill the holes from");
 
+  // The problem is linear in the heights: it is solved for the heights over the power of two
+  // `unit` at or just below the largest (so that they lie within [-2, 2] and the squares and
+  // sums of the iteration cannot overflow, and the filled heights, bounded by the known ones,
+  // come back finite; dividing and multiplying by it is exact).
+  double largest = 0.0;
+  for (size_t i = 0; i < h.size(); ++i)
+    if (unknown[i] < 0) largest = std::max(largest, std::fabs(h[i]));
+  if (!std::isfinite(largest))
+    throw FileError("a height is not finite: missing points cannot be filled from it");
+  int exponent = 0;
+  std::frexp(largest, &exponent);
+  const double unit = largest > 0.0 ? std::ldexp(1.0, exponent - 1) : 1.0;
+  const auto known = [&](size_t i) { return h[i] / unit; };
+
   // A x = b with A = diag(degree) - adjacency among unknowns, b = sum of known neighbours.
   std::vector<double> diag(m), b(m, 0.0), x(m);
   double known_sum = 0.0;
   int64_t known_count = 0;
   for (size_t i = 0; i < h.size(); ++i)
     if (unknown[i] < 0) {
-      known_sum += h[i];
+      known_sum += known(i);
       ++known_count;
     }
   const double mean = known_sum / static_cast<double>(known_count);
@@ -83,7 +97,7 @@ int64_t fill_missing(HeightMap &map) {
     int degree = 0;
     for_neighbours(where[k], [&](int64_t j) {
       ++degree;
-      if (unknown[j] < 0) b[k] += h[j];
+      if (unknown[j] < 0) b[k] += known(static_cast<size_t>(j));
     });
     diag[k] = degree;
     x[k] = mean;
@@ -106,9 +120,7 @@ int64_t fill_missing(HeightMap &map) {
   }
   b_norm = std::sqrt(b_norm);
   // Scale of the answer, so that an all-zero b (known heights all 0) still has a tolerance.
-  double scale = b_norm;
-  for (double v : h)
-    if (!std::isnan(v)) scale = std::max(scale, std::fabs(v));
+  const double scale = std::max(b_norm, largest / unit);
   const double tolerance = 1e-15 * (scale > 0 ? scale : 1.0);
   double rz = 0.0;
   for (int64_t k = 0; k < m; ++k) {
@@ -147,7 +159,7 @@ int64_t fill_missing(HeightMap &map) {
     rz = rz_next;
     for (int64_t k = 0; k < m; ++k) p[k] = z[k] + beta * p[k];
   }
-  for (int64_t k = 0; k < m; ++k) h[where[k]] = x[k];
+  for (int64_t k = 0; k < m; ++k) h[where[k]] = x[k] * unit;
   map.missing = 0;
   return m;
 }

@@ -4,6 +4,7 @@
 // fastest) or inline as Record3/DataList/Datum lines.
 #include <zip.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -96,9 +97,19 @@ class Reader {
       fail("cannot read " + name + " in the archive: " + zip_strerror(archive));
     zip_file_t *file = zip_fopen_index(archive, index, 0);
     if (!file) fail("cannot read " + name + " in the archive: " + zip_strerror(archive));
-    std::string bytes(stat.size, '\0');
-    const zip_int64_t got = stat.size ? zip_fread(file, &bytes[0], stat.size) : 0;
-    const bool ok = got == static_cast<zip_int64_t>(stat.size);
+    // Read in pieces rather than allocating the size the archive declares, which a damaged
+    // or hostile archive can set to anything: memory grows only with what is really there.
+    std::string bytes;
+    std::vector<char> piece(1 << 16);
+    zip_uint64_t total = 0;
+    while (total < stat.size) {
+      const zip_uint64_t want = std::min<zip_uint64_t>(piece.size(), stat.size - total);
+      const zip_int64_t got = zip_fread(file, piece.data(), want);
+      if (got <= 0) break;
+      bytes.append(piece.data(), static_cast<size_t>(got));
+      total += static_cast<zip_uint64_t>(got);
+    }
+    const bool ok = total == stat.size;
     std::string error = ok ? "" : zip_file_strerror(file);
     zip_fclose(file);
     if (!ok) fail("cannot read " + name + " in the archive: " + error);

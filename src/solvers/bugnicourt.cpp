@@ -227,7 +227,8 @@ bool on_the_gap(const OptionValues &options) { return options.text("variable") =
 
 // On a free substrate the gap formulation takes penetration control only.
 constexpr const char *mean_gap_on_free =
-    "the mean displacement is not a free mode there whose energy can be left out";
+    "mean-gap control of the gap formulation is offered on a periodic half-space only; on a "
+    "free one the mean displacement is not a free mode whose energy can be left out";
 
 Offer offer_for(const OptionValues &options) {
   if (on_the_gap(options))

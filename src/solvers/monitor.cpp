@@ -27,7 +27,9 @@ bool Monitor::should_stop(std::int64_t iteration, const IterationState &state) {
   iterations_ = iteration;
   evaluations_ = state.evaluations;
   transforms_ = state.transforms;
-  if (!std::isfinite(state.error) ||
+  // An error is a magnitude: one that is not finite, or negative (a maximum over no finite
+  // value), says that the iterate broke down.
+  if (!std::isfinite(state.error) || state.error < 0.0 ||
       (settings_.record_history && !std::isfinite(state.objective))) {
     termination_ = Termination::breakdown;
     return true;

@@ -98,8 +98,9 @@ AlgorithmSpec soft_spec(const char *name, const char *summary, bool periodic_onl
   spec.interactions = soft_interactions;
   spec.free_controls = {Control::penetration};
   spec.free_reason =
-      "the rigid-body penetration is not a free mode of the displacement there, so the mean "
-      "pressure cannot be imposed through it";
+      "mean-pressure control of an unconstrained formulation is offered on a periodic "
+      "half-space only; on a free one the rigid-body penetration is not a free mode of the "
+      "displacement through which the mean pressure could be imposed";
   spec.options = std::move(options);
   spec.run = run;
   return spec;

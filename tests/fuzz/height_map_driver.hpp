@@ -76,24 +76,10 @@ inline void read_one(const uint8_t *data, size_t size, asp::io::FileFormat forma
       infinite = true;
   }
   if (missing != map.missing) broken("missing is not the count of NaN heights");
-  // Known defect, skipped here until it is fixed: the binary readers (.npy, and .x3p's point
-  // data) return +-Inf heights as they find them, where the text reader refuses them ("is not
-  // finite (only nan marks a missing point)"); e.g. a float64 .npy of shape (2,) holding 1 and
-  // inf. The text reader is still held to it.
-  if (infinite) {
-    if (format == asp::io::FileFormat::text) broken("an infinite height");
-    return;
-  }
+  // Every reader refuses infinite heights (only NaN marks a missing point).
+  if (infinite) broken("an infinite height");
   (void)asp::io::describe_missing(map);
   if (missing == 0 || missing == map.nx * map.ny || map.nx * map.ny > max_filled_pixels) return;
-  // Known defect, skipped here until it is fixed: fill_missing starts its conjugate gradients
-  // from the mean of the known heights and sums squares of residuals of that size, so known
-  // heights beyond about 1e153 in magnitude overflow to Inf and the filled heights come out NaN
-  // ("nan 1\n1 1e200\n" as a text matrix). Maps with heights up to 1e150 are filled and checked.
-  double largest = 0.0;
-  for (double h : map.heights)
-    if (!std::isnan(h)) largest = std::max(largest, std::fabs(h));
-  if (largest > 1e150) return;
   try {
     if (asp::io::fill_missing(map) != missing) broken("fill_missing filled another count");
   } catch (const asp::io::FileError &e) {

@@ -574,4 +574,34 @@ TEST(DamagedFiles, EveryCutAndEveryInvertedByteIsReadOrRefused) {
   }
 }
 
+// Found by fuzzing the readers. Each failed before its fix: a .npy holding an infinity was
+// read as a height; an x3p archive of 812 bytes whose directory declares an entry of 4.2 GB
+// made the reader allocate that much before reading (a std::bad_alloc, not a FileError, where
+// memory is short); and missing points next to heights above about 1e153 were filled with
+// NaN, the squares of the conjugate gradients' residuals overflowing.
+TEST(FuzzFindings, InfiniteNpyHeightsAreRefused) {
+  const std::string message = read_error(data("infinite.npy"));
+  EXPECT_TRUE(contains(message, "not finite")) << message;
+}
+
+TEST(FuzzFindings, DeclaredSizesAreNotAllocatedBeforeReading) {
+  // Refused with a FileError (its data is not there), and read_error fails on anything else.
+  // The allocation itself is what libFuzzer's malloc limit catches: this archive is also a
+  // seed of tests/fuzz (fuzz.x3p_reader), which failed on it before the fix.
+  EXPECT_FALSE(read_error(data("huge_declared_entry.x3p"), FileFormat::x3p).empty());
+}
+
+TEST(FuzzFindings, MissingPointsBesideHugeHeightsAreFilled) {
+  for (double scale : {1.0, 1e200, 1e300, 1.7e308}) {
+    HeightMap map;
+    map.nx = 2;
+    map.ny = 2;
+    map.heights = {std::numeric_limits<double>::quiet_NaN(), scale, scale, scale};
+    map.missing = 1;
+    EXPECT_EQ(asp::io::fill_missing(map), 1);
+    // The harmonic interpolation of equal heights, to the fill's relative residual of 1e-15.
+    EXPECT_NEAR(map.heights[0], scale, 1e-14 * scale) << scale;
+  }
+}
+
 }  // namespace
