@@ -25,8 +25,10 @@ struct ScalingScene {
   double value = 0.005;
 };
 
-// The scene for `algorithm` on `grid` (this process's rows of it, if distributed).
-inline ScalingScene scaling_scene(const std::shared_ptr<asp::Grid> &grid, const char *algorithm) {
+// The scene for `algorithm` on `grid` (this process's rows of it, if distributed), on a
+// periodic half-space or a free one.
+inline ScalingScene scaling_scene(const std::shared_ptr<asp::Grid> &grid, const char *algorithm,
+                                  asp::SubstrateKind substrate = asp::SubstrateKind::periodic) {
   asp::SelfAffineParameters p;
   p.hurst = 0.8;
   p.long_cutoff = grid->lx();
@@ -38,7 +40,7 @@ inline ScalingScene scaling_scene(const std::shared_ptr<asp::Grid> &grid, const 
   std::vector<double> h(static_cast<std::size_t>(grid->local_pixels()));
   asp::self_affine_topography(*grid, p, h.data());
   ScalingScene scene;
-  scene.system = std::make_unique<asp::System>(grid, 1.0);
+  scene.system = std::make_unique<asp::System>(grid, 1.0, substrate);
   scene.system->set_topography(h.data());
   if (std::strcmp(algorithm, "lbfgs_fourier") == 0) {
     const double rc = 1.0 / asp::surface_statistics(*grid, h.data()).rms_curvature;

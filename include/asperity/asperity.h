@@ -67,8 +67,9 @@
  * ---------------------------------------------------------------------------------------------
  * A system holds 3 fields of nx*ny doubles (heights, pressure, gap): 24 bytes per pixel. A
  * solve adds the work arrays of its algorithm ("pk": 36 bytes per pixel, "bugnicourt",
- * measured: 52 on the pressure, 56 on the gap, 68 on the gap with adhesion and 72 with it
- * under mean-gap control, "lbfgsb": 52 + 16 per pair of its "memory", 132 with the default
+ * measured: 52 on the pressure, 48 on the gap, 60 on the gap with adhesion and 64 with it
+ * under mean-gap control (on the gap, one of its arrays is the system's pressure, which the
+ * solve writes when it ends), "lbfgsb": 52 + 16 per pair of its "memory", 132 with the default
  * 5, plus index lists and a heap of breakpoints, measured 6 bytes per pixel on the pressure
  * and 20 on the gap; the unconstrained solvers, measured: "lbfgs" 240 and
  * "lbfgs_fourier" 272 with the default memory of 10 (16 per pair), "fire" 64,

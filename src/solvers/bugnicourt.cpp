@@ -36,12 +36,15 @@ void bugnicourt(Formulation &f, Monitor &monitor) {
   const BugnicourtPasses passes(f);
   const auto n = static_cast<std::size_t>(f.size());
   double *x = f.variable().data();
-  Field g(n), c(n), d(n), h(n);
-  const double value_at_zero = f.gradient_at_zero(c.data());
+  // The gradient at zero takes the formulation's spare array if it lends one.
+  double *spare = f.spare_array();
+  Field g(n), c_field(spare != nullptr ? 0 : n), d(n), h(n);
+  double *c = spare != nullptr ? spare : c_field.data();
+  const double value_at_zero = f.gradient_at_zero(c);
   // f(x) = x.(g + c)/2 + f(0) for the history, without an evaluation.
   const auto value_of = [&]() {
     return monitor.wants_objective()
-               ? 0.5 * (f.dot(x, g.data()) + f.dot(x, c.data())) + value_at_zero
+               ? 0.5 * (f.dot(x, g.data()) + f.dot(x, c)) + value_at_zero
                : 0.0;
   };
   // The gradient at x, with the value only for the history.
@@ -75,7 +78,7 @@ void bugnicourt(Formulation &f, Monitor &monitor) {
       }
     }
     const double alpha = -descent / curvature;
-    const Step step = passes.step(x, d.data(), alpha, g.data(), h.data(), c.data(),
+    const Step step = passes.step(x, d.data(), alpha, g.data(), h.data(), c,
                                   followed < updates_between_evaluations, p.shift, curvature);
     // The gradient is evaluated after a cut, when the followed one is due for a refresh, and
     // before the monitor may call the iterate converged (or see a non-finite error).
@@ -115,13 +118,16 @@ void bugnicourt_separable(Formulation &f, const LocalTerm &psi, Monitor &monitor
   const BugnicourtPasses passes(f);
   const auto n = static_cast<std::size_t>(f.size());
   Field &variable = f.variable();
-  Field y_field(n), q_field(n), qy_field(n), d(n), k(n), e_field(n), ey_field(n);
+  // The trial point takes the formulation's spare array if it lends one.
+  double *spare = f.spare_array();
+  Field y_field(spare != nullptr ? 0 : n), q_field(n), qy_field(n), d(n), k(n), e_field(n),
+      ey_field(n);
   // Q's gradient at 0, which a trial point rescaled to the mean needs; none without a mean
   // constraint.
   Field c(f.constrains_mean() ? n : 0);
   // The iterate, q and the states there, and the trial arrays (after a step, the previous
   // iterate's), exchanged when a step is taken.
-  double *x = variable.data(), *y = y_field.data();
+  double *x = variable.data(), *y = spare != nullptr ? spare : y_field.data();
   double *q = q_field.data(), *qy = qy_field.data();
   double *e = e_field.data(), *ey = ey_field.data();
   const double value_per_state = psi.value_per_state(), slope = psi.slope_per_state(),

@@ -125,6 +125,12 @@ class Formulation {
   // Combines a solver's own sums and maxima over the unknowns this process holds.
   virtual const Reductions &reductions() const = 0;
 
+  // An array of size() doubles that the formulation holds but neither reads nor needs kept
+  // until finish() writes it (the gap formulation's is the system's pressure, which it
+  // writes at the end), or null. A solver may take it for one of its work arrays, so that
+  // the largest scenes need one array fewer; its values at the start are undefined.
+  virtual double *spare_array() { return nullptr; }
+
   // Writes the iterate back into the system's state in physical units, with everything that
   // follows from it (gap, penetration). Returns false if a physical value is not finite (the
   // caller then resets the state).

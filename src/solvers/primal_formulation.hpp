@@ -72,6 +72,11 @@ class PrimalFormulation final : public ScaledFormulation {
     return value;
   }
   bool finish() override;
+  // The system's pressure, which finish() writes without reading it, on a substrate whose
+  // surface is the grid (beyond the grid there are more unknowns than pressures).
+  double *spare_array() override {
+    return substrate_.surface_beyond_grid() ? nullptr : state_.pressure.data();
+  }
 
  private:
   // K u (scaled) of a field, into out; the q = 0 mode only under penetration control.
