@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// The fields' allocator: it counts what it holds, and asks for transparent huge pages for
+// large fields (on Linux, where the kernel's per-mapping flags show the request).
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "core/aligned_field.hpp"
+
+namespace {
+
+// The VmFlags of the mapping of this process that holds `address` (/proc/self/smaps), or
+// "none" if no mapping does, or "" where the file cannot be read.
+std::string mapping_flags(const void *address) {
+  std::ifstream smaps("/proc/self/smaps");
+  if (!smaps) return "";
+  const auto at = reinterpret_cast<std::uintptr_t>(address);
+  bool inside = false;
+  std::string line;
+  while (std::getline(smaps, line)) {
+    std::uintptr_t begin = 0, end = 0;
+    char dash = 0;
+    std::istringstream range(line);
+    if (range >> std::hex >> begin >> dash >> end && dash == '-') {
+      inside = begin <= at && at < end;
+    } else if (inside && line.rfind("VmFlags:", 0) == 0) {
+      return line;
+    }
+  }
+  return "none";
+}
+
+TEST(FieldAllocator, CountsTheBytesItHolds) {
+  const std::int64_t before = asp::field_bytes_in_use();
+  {
+    const asp::Field f(1000);
+    EXPECT_EQ(asp::field_bytes_in_use() - before, 8000);
+    EXPECT_GE(asp::field_bytes_peak() - before, 8000);
+  }
+  EXPECT_EQ(asp::field_bytes_in_use(), before);
+}
+
+// A field of 64 MiB is advised for huge pages ("hg" among the flags of the mapping that holds
+// its middle: the advice starts at the first whole page of the field); one of 64 KiB is not
+// (it shares the heap with small allocations, whose pages are not the field's).
+TEST(FieldAllocator, AsksForHugePagesForLargeFields) {
+  const asp::Field large(std::size_t{8} << 20);
+  const std::string flags = mapping_flags(large.data() + large.size() / 2);
+  if (flags.empty() || flags == "none") GTEST_SKIP() << "no /proc/self/smaps on this system";
+  EXPECT_NE(flags.find(" hg"), std::string::npos) << flags;
+  const asp::Field small(std::size_t{8} << 10);
+  const std::string small_flags = mapping_flags(small.data());
+  EXPECT_EQ(small_flags.find(" hg"), std::string::npos) << small_flags;
+}
+
+}  // namespace
