@@ -7,7 +7,8 @@
 // known heights fixed. Every hole borders a known point (the grid is connected), so the system
 // is symmetric positive definite; it is solved by conjugate gradients with the diagonal as
 // preconditioner to a relative residual of 1e-15 (or until rounding stops the residual
-// shrinking), which handles large holes in O(diameter) iterations.
+// shrinking), which handles large holes in O(diameter) iterations. The filled heights are
+// kept within the range of the known ones, as the exact solution is.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -159,7 +160,16 @@ int64_t fill_missing(HeightMap &map) {
     rz = rz_next;
     for (int64_t k = 0; k < m; ++k) p[k] = z[k] + beta * p[k];
   }
-  for (int64_t k = 0; k < m; ++k) h[where[k]] = x[k] * unit;
+  // Each filled height is a weighted mean of known ones (the discrete maximum principle), so
+  // it lies within their range; rounding in the iteration can carry it a few ulps beyond,
+  // which next to a height of -DBL_MAX overflowed to -infinity. Clamped to that range.
+  double lowest = HUGE_VAL, highest = -HUGE_VAL;
+  for (size_t i = 0; i < h.size(); ++i)
+    if (unknown[i] < 0) {
+      lowest = std::min(lowest, known(i));
+      highest = std::max(highest, known(i));
+    }
+  for (int64_t k = 0; k < m; ++k) h[where[k]] = std::clamp(x[k], lowest, highest) * unit;
   map.missing = 0;
   return m;
 }

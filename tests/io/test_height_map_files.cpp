@@ -577,8 +577,10 @@ TEST(DamagedFiles, EveryCutAndEveryInvertedByteIsReadOrRefused) {
 // Found by fuzzing the readers. Each failed before its fix: a .npy holding an infinity was
 // read as a height; an x3p archive of 812 bytes whose directory declares an entry of 4.2 GB
 // made the reader allocate that much before reading (a std::bad_alloc, not a FileError, where
-// memory is short); and missing points next to heights above about 1e153 were filled with
-// NaN, the squares of the conjugate gradients' residuals overflowing.
+// memory is short); missing points next to heights above about 1e153 were filled with NaN,
+// the squares of the conjugate gradients' residuals overflowing; and missing points beside a
+// height of -DBL_MAX were filled with -infinity, the iteration's rounding carrying them a few
+// ulps beyond it.
 TEST(FuzzFindings, InfiniteNpyHeightsAreRefused) {
   const std::string message = read_error(data("infinite.npy"));
   EXPECT_TRUE(contains(message, "not finite")) << message;
@@ -602,6 +604,24 @@ TEST(FuzzFindings, MissingPointsBesideHugeHeightsAreFilled) {
     // The harmonic interpolation of equal heights, to the fill's relative residual of 1e-15.
     EXPECT_NEAR(map.heights[0], scale, 1e-14 * scale) << scale;
   }
+}
+
+TEST(FuzzFindings, MissingPointsBesideTheLargestHeightsStayFinite) {
+  // The fuzzer's input: a 1D map of six, two known heights, one of them -DBL_MAX.
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double lowest = -std::numeric_limits<double>::max();
+  HeightMap map;
+  map.nx = 6;
+  map.ny = 1;
+  map.heights = {-2.8483943054992686e+18, nan, lowest, nan, nan, nan};
+  map.missing = 4;
+  EXPECT_EQ(asp::io::fill_missing(map), 4);
+  for (double h : map.heights) EXPECT_TRUE(std::isfinite(h)) << h;
+  // Within the known range; beyond the last known point, on the open edge, the harmonic fill
+  // is that point's height.
+  for (double h : map.heights) EXPECT_GE(h, lowest);
+  EXPECT_NEAR(map.heights[5], lowest, 1e-15 * -lowest);
+  EXPECT_NEAR(map.heights[1], 0.5 * lowest, 1e-15 * -lowest);
 }
 
 }  // namespace
