@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// What the benchmark programs share: wall-clock time, and the FFT pair that a solver's time per
-// iteration is compared with.
+// What the benchmark programs share: wall-clock time, the process's peak resident size, and the
+// FFT pair that a solver's time per iteration is compared with.
 #pragma once
 
 #include <algorithm>
 #include <chrono>
+#include <fstream>
+#include <string>
 
 #include "core/aligned_field.hpp"
 #include "core/grid.hpp"
@@ -13,6 +15,22 @@ namespace bench {
 
 inline double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The process's peak resident size in bytes (VmHWM: the whole process, the libraries' buffers
+// included), 0 where /proc/self/status does not tell it.
+inline double peak_resident_bytes() {
+  std::ifstream status("/proc/self/status");
+  std::string key;
+  while (status >> key) {
+    if (key == "VmHWM:") {
+      double kilobytes = 0.0;
+      status >> kilobytes;
+      return 1024.0 * kilobytes;
+    }
+    status.ignore(1 << 12, '\n');
+  }
+  return 0.0;
 }
 
 // Best of several timed batches of r2c + c2r pairs of shape nx x ny with the grid's plans (the

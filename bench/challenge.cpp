@@ -22,8 +22,6 @@
 //        (defaults: 16384, the library's default threads, bugnicourt:gap, 1.5e-6 m, 1e-6,
 //         100000, measured FFT plans (--estimate: FFTW_ESTIMATE, which saves the planning's
 //         minutes at 16384^2))
-#include <sys/resource.h>
-
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -56,12 +54,6 @@ struct Options {
   bool pair = true;
   bool estimate = false;  // FFTW_ESTIMATE plans instead of measured ones
 };
-
-double peak_resident_gib() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_maxrss) / (1024.0 * 1024.0);  // ru_maxrss is in KiB
-}
 
 // A line a minute, so that an hour-long solve shows where it is.
 struct Progress {
@@ -148,7 +140,7 @@ int run(const Options &o) {
               "(%.2f GiB); the process's peak resident size %.2f GiB\n",
               system_bytes, solve_bytes, system_bytes + solve_bytes,
               (system_bytes + solve_bytes) * pixels / (1024.0 * 1024.0 * 1024.0),
-              peak_resident_gib());
+              bench::peak_resident_bytes() / (1024.0 * 1024.0 * 1024.0));
   return 0;
 }
 

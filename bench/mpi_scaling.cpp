@@ -21,10 +21,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <string>
 #include <vector>
 
+#include "bench/bench_common.hpp"
 #include "bench/scaling_scene.hpp"
 #include "core/mpi_partition.hpp"
 
@@ -41,21 +41,6 @@ double timed(Work &&work) {
   double seconds = MPI_Wtime() - start;
   MPI_Allreduce(MPI_IN_PLACE, &seconds, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
   return seconds;
-}
-
-// The process's peak resident memory in bytes (VmHWM), 0 if unknown.
-double peak_memory() {
-  std::ifstream status("/proc/self/status");
-  std::string key;
-  while (status >> key) {
-    if (key == "VmHWM:") {
-      double kilobytes = 0.0;
-      status >> kilobytes;
-      return 1024.0 * kilobytes;
-    }
-    status.ignore(1 << 12, '\n');
-  }
-  return 0.0;
 }
 
 template <class Pair>
@@ -106,7 +91,7 @@ void run(const char *algorithm, std::int64_t n, int iterations, bool free) {
   const double per_iteration = seconds / static_cast<double>(solver.report().iterations);
   const double pair = free ? padded_pair_seconds(*grid) : fft_pair_seconds(*grid);
   double memory =
-      peak_memory() / static_cast<double>(std::max<std::int64_t>(1, grid->local_pixels()));
+      bench::peak_resident_bytes() / static_cast<double>(std::max<std::int64_t>(1, grid->local_pixels()));
   MPI_Allreduce(MPI_IN_PLACE, &memory, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
   if (rank == 0)
     std::printf("%-14s %6lld %9d %12.2f %10.2f %10.2f %14.0f\n", algorithm,
