@@ -9,7 +9,8 @@
 // or more, where rho is a third of a pixel.
 //
 // Solved under penetration control (default 1.5 um, a few percent of repulsive contact at
-// 2048^2 to 8192^2), cold, with `bugnicourt` on the gap unless told otherwise. Printed: the
+// 2048^2 to 8192^2), or under mean-gap control with --mean-gap (1.2 um gives 2 to 3 percent),
+// cold, with `bugnicourt` on the gap unless told otherwise. Printed: the
 // surface's statistics, the memory the system and the solve hold per pixel (the peak of the
 // library's fields, counted by its allocator) and the process's peak resident size, the FFT
 // pair of the grid with the same threads (skipped with --no-pair), progress every minute,
@@ -17,8 +18,8 @@
 // attractive fractions, and how it ended.
 //
 // usage: asperity_challenge [--size N] [--threads T] [--algorithm NAME[:VARIABLE]]
-//                           [--penetration D] [--tolerance T] [--max-iterations K]
-//                           [--no-pair] [--estimate]
+//                           [--penetration D | --mean-gap G] [--tolerance T]
+//                           [--max-iterations K] [--no-pair] [--estimate]
 //        (defaults: 16384, the library's default threads, bugnicourt:gap, 1.5e-6 m, 1e-6,
 //         100000, measured FFT plans (--estimate: FFTW_ESTIMATE, which saves the planning's
 //         minutes at 16384^2))
@@ -49,6 +50,7 @@ struct Options {
   std::string algorithm = "bugnicourt";
   std::string variable = "gap";
   double penetration = 1.5e-6;
+  double mean_gap = 0.0;  // > 0: mean-gap control at this mean gap instead of the penetration
   double tolerance = 1e-6;
   double max_iterations = 1e5;
   bool pair = true;
@@ -120,22 +122,27 @@ int run(const Options &o) {
   solver.set_progress(report_progress, &progress);
   asp::reset_field_bytes_peak();
   const std::int64_t before = asp::field_bytes_in_use();
-  solver.solve(system, asp::Control::penetration, o.penetration);
+  const bool by_mean_gap = o.mean_gap > 0.0;
+  solver.solve(system, by_mean_gap ? asp::Control::mean_gap : asp::Control::penetration,
+               by_mean_gap ? o.mean_gap : o.penetration);
   const double solve_bytes = static_cast<double>(asp::field_bytes_peak() - before) / pixels;
 
   const asp::SolveReport &r = solver.report();
   const double per_iteration = r.seconds / static_cast<double>(r.iterations > 0 ? r.iterations : 1);
-  std::printf("%s%s%s at penetration %.4g um, tolerance %.0e: %s after %lld iterations "
+  std::printf("%s%s%s at %s %.4g um, tolerance %.0e: %s after %lld iterations "
               "(%lld evaluations, %lld transforms) in %.1f s, %.3f s per iteration",
               o.algorithm.c_str(), o.variable.empty() ? "" : ":", o.variable.c_str(),
-              1e6 * o.penetration, o.tolerance, asp::termination_name(r.termination),
+              by_mean_gap ? "mean gap" : "penetration",
+              1e6 * (by_mean_gap ? o.mean_gap : o.penetration), o.tolerance, asp::termination_name(r.termination),
               static_cast<long long>(r.iterations), static_cast<long long>(r.evaluations),
               static_cast<long long>(r.transforms), r.seconds, per_iteration);
   if (pair > 0.0) std::printf(" (%.2f FFT pairs)", per_iteration / pair);
   std::printf("; error %.3e\n", r.error);
-  std::printf("contact %.4f %%, attractive %.4f %%, mean pressure %.4g kPa, mean gap %.4g nm\n",
+  std::printf("contact %.4f %%, attractive %.4f %%, mean pressure %.4g kPa, mean gap %.4g nm, "
+              "penetration %.4g um\n",
               100.0 * system.contact_fraction(), 100.0 * system.attractive_fraction(),
-              1e-3 * system.mean_pressure(), 1e9 * system.mean_gap());
+              1e-3 * system.mean_pressure(), 1e9 * system.mean_gap(),
+              1e6 * system.state().penetration);
   std::printf("memory: system %.1f B/pixel, solve %.1f B/pixel, together %.1f B/pixel "
               "(%.2f GiB); the process's peak resident size %.2f GiB\n",
               system_bytes, solve_bytes, system_bytes + solve_bytes,
@@ -147,7 +154,8 @@ int run(const Options &o) {
 int usage(const char *program) {
   std::fprintf(stderr,
                "usage: %s [--size N] [--threads T] [--algorithm NAME[:VARIABLE]] "
-               "[--penetration D] [--tolerance T] [--max-iterations K] [--no-pair] [--estimate]\n",
+               "[--penetration D | --mean-gap G] [--tolerance T] [--max-iterations K] [--no-pair] "
+               "[--estimate]\n",
                program);
   return 2;
 }
@@ -170,6 +178,8 @@ int main(int argc, char **argv) {
       o.variable = colon == std::string::npos ? "" : request.substr(colon + 1);
     } else if (arg == "--penetration" && has_value) {
       o.penetration = std::strtod(argv[++i], nullptr);
+    } else if (arg == "--mean-gap" && has_value) {
+      o.mean_gap = std::strtod(argv[++i], nullptr);
     } else if (arg == "--tolerance" && has_value) {
       o.tolerance = std::strtod(argv[++i], nullptr);
     } else if (arg == "--max-iterations" && has_value) {
@@ -182,7 +192,9 @@ int main(int argc, char **argv) {
       return usage(argv[0]);
     }
   }
-  if (o.size < 2 || o.threads < 0 || !std::isfinite(o.penetration)) return usage(argv[0]);
+  if (o.size < 2 || o.threads < 0 || !std::isfinite(o.penetration) ||
+      !(o.mean_gap >= 0.0 && std::isfinite(o.mean_gap)))
+    return usage(argv[0]);
   try {
     return run(o);
   } catch (const asp::Error &e) {
