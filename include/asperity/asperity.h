@@ -69,9 +69,10 @@
  * solve adds the work arrays of its algorithm ("pk": 36 bytes per pixel, "bugnicourt",
  * measured: 52 on the pressure, 48 on the gap, 60 on the gap with adhesion and 64 with it
  * under mean-gap control (on the gap, one of its arrays is the system's pressure, which the
- * solve writes when it ends), "lbfgsb": 52 + 16 per pair of its "memory", 132 with the default
- * 5, plus index lists and a heap of breakpoints, measured 6 bytes per pixel on the pressure
- * and 20 on the gap; the unconstrained solvers, measured: "lbfgs" 240 and
+ * solve writes when it ends), "lbfgsb": on the pressure 52 + 16 per pair of its "memory", 132
+ * with the default 5, on the gap 36 + 16 per pair, 116 with 5 (its search direction is the
+ * system's pressure), plus index lists and a heap of breakpoints, measured 6 bytes per pixel
+ * on the pressure and 24 on the gap; the unconstrained solvers, measured: "lbfgs" 240 and
  * "lbfgs_fourier" 272 with the default memory of 10 (16 per pair), "fire" 64,
  * "fire_mass_weighted" and "gfmd" 92; see docs/performance.md); a grid adds FFTW's plans. A
  * request whose arrays cannot be allocated returns ASP_ERR_OUT_OF_MEMORY and changes

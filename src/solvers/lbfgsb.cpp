@@ -204,7 +204,11 @@ class Lbfgsb {
         g_(static_cast<std::size_t>(n_)),
         trial_gradient_(static_cast<std::size_t>(n_)),
         x_old_(static_cast<std::size_t>(n_)),
-        d_(static_cast<std::size_t>(n_)),
+        // The direction takes the formulation's spare array if it lends one: of the four
+        // fields it is the one that never changes hands (the gradients swap, x_old goes into
+        // the pairs' memory).
+        d_field_(f.spare_array() != nullptr ? 0 : static_cast<std::size_t>(n_)),
+        d_(f.spare_array() != nullptr ? f.spare_array() : d_field_.data()),
         bfgs_(n_, memory, reductions_) {}
 
   // The paper's algorithm, step by step, from x projected onto the bound: Cauchy point,
@@ -303,7 +307,7 @@ class Lbfgsb {
     const int k2 = bfgs_.columns();
     const double inverse_theta = 1.0 / bfgs_.theta(), t = cauchy.t;
     const double *x = x_, *g = g_.data(), *u = u_.data();
-    double *d = d_.data();
+    double *d = d_;
     // The list of free unknowns, when they are few, is the one the subspace sums made.
     const bool listed = k2 > 0 && free_count <= total_ / 2;
     // d holds x_bar before its projection; with a list, without w_i.u yet.
@@ -328,7 +332,7 @@ class Lbfgsb {
   void backtrack_subspace_step(const CauchyPoint &cauchy) {
     const double inverse_theta = 1.0 / bfgs_.theta(), t = cauchy.t;
     const double *x = x_, *g = g_.data(), *u = u_.data();
-    double *d = d_.data();
+    double *d = d_;
     const CompactBfgs &bfgs = bfgs_;
     const int k2 = bfgs_.columns();
     // d <- the unprojected step from the Cauchy point, 0 at the bound.
@@ -354,7 +358,7 @@ class Lbfgsb {
   // largest feasible step along d. Returns whether d descends.
   bool finish_direction() {
     const double *x = x_, *g = g_.data();
-    double *d = d_.data(), *x_old = x_old_.data();
+    double *d = d_, *x_old = x_old_.data();
     // The maximum is that of -(step to the bound), so that its negative is the smallest.
     const auto s = loops::sums_and_max<2>(reductions_, n_, [&](std::int64_t i, double *sum,
                                                               double &max) {
@@ -388,7 +392,7 @@ class Lbfgsb {
         [&](double trial, double &value, double &slope) {
           move_to(trial);
           value = f_.value_and_gradient(x_, trial_gradient_.data());
-          slope = f_.dot(trial_gradient_.data(), d_.data());
+          slope = f_.dot(trial_gradient_.data(), d_);
         },
         &value_);
     if (result == LineSearchResult::accepted) return Search::accepted;
@@ -398,7 +402,7 @@ class Lbfgsb {
 
   // x <- max(x_old + step d, lower): the bound holds bitwise whatever the rounding.
   void move_to(double step) {
-    const double *x_old = x_old_.data(), *d = d_.data();
+    const double *x_old = x_old_.data(), *d = d_;
     double *x = x_;
     loops::for_each(n_, [&](std::int64_t i) {
       const double moved = x_old[i] + step * d[i];
@@ -424,7 +428,9 @@ class Lbfgsb {
   const Reductions &reductions_;
   double *x_;
   double value_ = 0.0;
-  Field g_, trial_gradient_, x_old_, d_;
+  Field g_, trial_gradient_, x_old_;
+  Field d_field_;  // empty when the direction is the formulation's spare array
+  double *d_;
   CompactBfgs bfgs_;
   std::vector<double> u_;
   double slope_ = 0.0, direction_norm_ = 0.0, largest_step_ = 0.0;
