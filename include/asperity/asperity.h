@@ -683,7 +683,10 @@ ASP_EXPORT int asp_solver_set_history(asp_solver *solver, int on);
  *                                    contact), and the final error is the last finite one
  *                                    (DBL_MAX if not even the starting point was finite).
  * Errors (a status other than ASP_OK) mean the solve did not run or its result could not be
- * stored; the system keeps the state it had before the call, and the solver has no report. */
+ * stored; the system keeps the state it had before the call, and the solver has no report.
+ * One exception: when memory runs out after the solve has begun to work on the state in place
+ * (ASP_ERR_OUT_OF_MEMORY from a work array made during the iterations, as the correction pairs
+ * of "lbfgsb" are), the system is reset to the zero-pressure state, as after a breakdown. */
 #define ASP_CONTROL_MEAN_PRESSURE 501
 #define ASP_CONTROL_PENETRATION 502
 #define ASP_CONTROL_MEAN_GAP 503

@@ -15,6 +15,7 @@ namespace asp {
 namespace {
 std::atomic<std::int64_t> bytes_in_use{0};
 std::atomic<std::int64_t> bytes_peak{0};
+std::atomic<std::int64_t> bytes_limit{0};
 
 void raise_peak(std::int64_t now) {
   std::int64_t peak = bytes_peak.load(std::memory_order_relaxed);
@@ -46,8 +47,12 @@ void advise_huge_pages(void *p, std::size_t bytes) {
 std::int64_t field_bytes_in_use() { return bytes_in_use.load(); }
 std::int64_t field_bytes_peak() { return bytes_peak.load(); }
 void reset_field_bytes_peak() { bytes_peak.store(bytes_in_use.load()); }
+void set_field_bytes_limit(std::int64_t bytes) { bytes_limit.store(bytes > 0 ? bytes : 0); }
 
 void *allocate_field_bytes(std::size_t bytes) {
+  const std::int64_t limit = bytes_limit.load(std::memory_order_relaxed);
+  if (limit > 0 && bytes_in_use.load() + static_cast<std::int64_t>(bytes) > limit)
+    throw std::bad_alloc();
   void *p = fftw_malloc(bytes == 0 ? 1 : bytes);
   if (p == nullptr) throw std::bad_alloc();
   advise_huge_pages(p, bytes);

@@ -15,6 +15,9 @@ namespace asp {
 std::int64_t field_bytes_in_use();
 std::int64_t field_bytes_peak();
 void reset_field_bytes_peak();
+// A ceiling on the bytes fields may hold together (0: none, the default): an allocation that
+// would pass it throws std::bad_alloc, so that tests can make memory run out at a chosen point.
+void set_field_bytes_limit(std::int64_t bytes);
 
 void *allocate_field_bytes(std::size_t bytes);
 void free_field_bytes(void *pointer, std::size_t bytes) noexcept;

@@ -84,6 +84,11 @@ class System {
   const ContactState &state() const { return state_; }
   // Zero pressure: the undeformed body touching the highest point.
   void reset_state();
+  // Whether a solve holds the state in its own units, from the moment a formulation begins to
+  // work on it in place until the solve ends: an error in between (memory running out) leaves
+  // the state reset rather than half-scaled.
+  void set_state_held_by_solve(bool held) { state_held_by_solve_ = held; }
+  bool state_held_by_solve() const { return state_held_by_solve_; }
 
   // Observables of the current state.
   double contact_fraction() const { return interaction_->contact_fraction(*grid_, state_); }
@@ -116,6 +121,7 @@ class System {
   double slope_pressure_ = 0.0;  // E* h'_rms/2
   double reference_pressure_override_ = 0.0;
   double last_reference_pressure_ = 0.0;
+  bool state_held_by_solve_ = false;
 };
 
 }  // namespace asp

@@ -29,6 +29,7 @@ DualFormulation::DualFormulation(System &system, Control control, double value,
     direction_ = grid_.make_field();
     pressure_spectrum_ = substrate_.make_spectrum();
   }
+  hold_state();
   // The gap array holds the scaled heights for their transform; every way out of a solve
   // computes the gap again (evaluate_gap, finish). The transform's own size (the padded grid
   // of a free substrate) normalises them.

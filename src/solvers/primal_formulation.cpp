@@ -39,6 +39,7 @@ PrimalFormulation::PrimalFormulation(System &system, Control control, double val
     surface_pressure_ = Field(static_cast<std::size_t>(unknowns_));
   }
 
+  hold_state();
   // The stored gap as the starting iterate, in units of P/k; on a surface beyond the grid,
   // the displacement there that the stored pressure makes.
   if (substrate_.surface_beyond_grid()) {

@@ -25,6 +25,10 @@ class ScaledFormulation : public Formulation {
   const Reductions &reductions() const override { return grid_.reductions(); }
 
  protected:
+  // Called by a formulation that works on the system's state in place, after its work arrays
+  // are made and before it first changes the state (System::state_held_by_solve).
+  void hold_state() { system_.set_state_held_by_solve(true); }
+
   // Throws Error when the solve cannot be represented (scene_units); touches nothing.
   ScaledFormulation(System &system, Control control, double value)
       : system_(system),

@@ -155,18 +155,26 @@ void Solver::solve(System &system, Control control, double value) {
 
   // A user's potential can fail in the middle of a solve (Error(callback)): the system then
   // goes back to the state the solve started from, which costs a copy of it only for them.
+  // Any other error after a formulation began to work on the state in place (memory running
+  // out for a solver's arrays or a quasi-Newton pair) resets the state, as a breakdown does,
+  // rather than leave it in the solve's units.
   const InteractionKind kind = system.interaction().kind();
-  if (kind == InteractionKind::user_potential || kind == InteractionKind::user_potential_hard_wall) {
-    const ContactState start = system.state();
-    try {
-      algorithm_.run(system, control, value, options_, monitor);
-    } catch (...) {
-      system.state() = start;
-      throw;
-    }
-  } else {
+  const bool keep_start =
+      kind == InteractionKind::user_potential || kind == InteractionKind::user_potential_hard_wall;
+  ContactState start;
+  if (keep_start) start = system.state();
+  try {
     algorithm_.run(system, control, value, options_, monitor);
+  } catch (...) {
+    if (keep_start) {
+      system.state() = start;
+    } else if (system.state_held_by_solve()) {
+      system.reset_state();
+    }
+    system.set_state_held_by_solve(false);
+    throw;
   }
+  system.set_state_held_by_solve(false);
 
   report_.iterations = monitor.iterations();
   report_.evaluations = monitor.evaluations();

@@ -5,9 +5,12 @@
 
 #include <cfloat>
 #include <cmath>
+#include <cstdint>
+#include <new>
 #include <string>
 #include <vector>
 
+#include "core/aligned_field.hpp"
 #include "core/error.hpp"
 #include "scene.hpp"
 #include "solvers/dual_formulation.hpp"
@@ -178,6 +181,75 @@ TEST(Solve, BreakdownResetsTheStateAndSaysSo) {
   // The system is usable: the next solve converges.
   solver.solve(system, asp::Control::mean_pressure, 0.01);
   EXPECT_TRUE(solver.report().converged());
+}
+
+// Memory that runs out in the middle of a solve (a solver's work arrays, a quasi-Newton pair
+// made on the way) leaves the system consistent: the state it had before the call, or, once
+// the solve has begun to change it in place, the zero-pressure state a breakdown leaves. Each
+// solver runs from a warm state under a ceiling on the fields' bytes raised in steps of 4
+// bytes per pixel until the solve gets through.
+TEST(Solve, MemoryRunningOutDuringASolveLeavesAConsistentState) {
+  struct Case {
+    const char *algorithm;
+    const char *variable;  // "" for none
+    bool soft_wall;
+    asp::Control control;
+    double value;
+  };
+  const Case cases[] = {
+      {"pk", "", false, asp::Control::mean_pressure, 0.01},
+      {"bugnicourt", "gap", false, asp::Control::penetration, 0.004},
+      {"lbfgsb", "gap", false, asp::Control::penetration, 0.004},
+      {"lbfgs", "", true, asp::Control::penetration, -0.45},
+      {"fire_mass_weighted", "", true, asp::Control::penetration, -0.45},
+  };
+  for (const Case &c : cases) {
+    SCOPED_TRACE(c.algorithm);
+    auto grid = asp_test::grid_2d(32, 32, 32.0, 32.0);
+    asp::System system(grid, 1.0);
+    const std::vector<double> h = rough_surface(*grid, 5, 0.1, 0.5, 2.0);
+    system.set_topography(h.data());
+    if (c.soft_wall) {
+      system.set_soft_wall(0.05, 0.3, 0.01, 0.3);
+    } else if (std::string(c.variable) == "gap") {
+      system.set_adhesion(1e-4, 0.3);
+    }
+    asp::Solver solver(c.algorithm);
+    if (*c.variable != '\0') solver.set_option("variable", std::string(c.variable));
+    solver.set_option("max_iterations", 5.0);
+    solver.solve(system, c.control, 0.5 * c.value);  // a warm state to start from
+    const asp::ContactState before = system.state();
+    const std::int64_t pixels = grid->n_pixels();
+    bool solved = false;
+    int failures = 0;
+    for (int step = 0; step < 200 && !solved; ++step) {
+      asp::set_field_bytes_limit(asp::field_bytes_in_use() + 4 * pixels * step + 1);
+      try {
+        solver.solve(system, c.control, c.value);
+        solved = true;
+      } catch (const std::bad_alloc &) {
+        ++failures;
+      }
+      asp::set_field_bytes_limit(0);
+      if (solved) break;
+      const asp::ContactState &now = system.state();
+      bool unchanged = now.penetration == before.penetration;
+      bool reset = now.penetration == 0.0;
+      for (std::int64_t i = 0; i < pixels; ++i) {
+        unchanged = unchanged && now.pressure[i] == before.pressure[i] &&
+                    now.gap[i] == before.gap[i];
+        reset = reset && now.pressure[i] == 0.0 && now.gap[i] == system.max_height() - h[i];
+      }
+      ASSERT_TRUE(unchanged || reset) << "after running out of memory at step " << step;
+      system.state() = before;
+    }
+    EXPECT_TRUE(solved);
+    EXPECT_GT(failures, 1);  // it ran out at more than one point
+    // The system is usable afterwards.
+    solver.set_option("max_iterations", 10000.0);
+    solver.solve(system, c.control, c.value);
+    EXPECT_TRUE(solver.report().converged()) << asp::termination_name(solver.report().termination);
+  }
 }
 
 TEST(Solve, StallsWhenTheToleranceIsBelowRoundOff) {
