@@ -62,4 +62,42 @@ inline void warm_up(asp::Solver &solver, ScalingScene &scene, int iterations) {
   solver.set_option("max_iterations", static_cast<double>(iterations));
 }
 
+// A timed solve of a scene readied by warm_up: the seconds before its first iteration (the
+// formulation, the solver's arrays, whose fresh pages the kernel clears, and the first
+// evaluation), per iteration after it, and in all, from the solve's own clock as its
+// progress callback sees it.
+struct SolveTimes {
+  double setup = 0.0;
+  double per_iteration = 0.0;
+  double total = 0.0;
+};
+
+inline SolveTimes timed_solve(asp::Solver &solver, ScalingScene &scene) {
+  struct Clock {
+    std::int64_t first_iteration = -1, last_iteration = -1;
+    double first = 0.0, last = 0.0;
+  } clock;
+  solver.set_progress(
+      [](std::int64_t iteration, double seconds, double, void *data) {
+        auto *c = static_cast<Clock *>(data);
+        if (c->first_iteration < 0) {
+          c->first_iteration = iteration;
+          c->first = seconds;
+        }
+        c->last_iteration = iteration;
+        c->last = seconds;
+        return 0;
+      },
+      &clock);
+  solver.solve(*scene.system, scene.control, scene.value);
+  solver.set_progress(nullptr, nullptr);
+  SolveTimes t;
+  t.setup = clock.first;
+  t.total = solver.report().seconds;
+  const std::int64_t iterations = clock.last_iteration - clock.first_iteration;
+  t.per_iteration = iterations > 0 ? (clock.last - clock.first) / static_cast<double>(iterations)
+                                   : t.total;
+  return t;
+}
+
 }  // namespace bench

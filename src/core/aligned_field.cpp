@@ -5,7 +5,10 @@
 
 #include <atomic>
 #include <cstdint>
+#include <cstring>
 #include <new>
+
+#include "core/loops.hpp"
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -42,6 +45,21 @@ void advise_huge_pages(void *p, std::size_t bytes) {
   (void)bytes;
 #endif
 }
+
+// Fresh pages are faulted in, and cleared by the kernel, where they are first written: on
+// one thread, the serial zeroing of a solve's work arrays took a fifth of a 20-iteration
+// lbfgs_fourier solve at 2048^2 and held its two-thread efficiency to 76 % (102 % over 60
+// iterations). Written in parallel parts, as the loops later read them.
+void zero_on_loop_threads(void *p, std::size_t bytes) {
+  auto *bytes_of = static_cast<unsigned char *>(p);
+  constexpr std::int64_t part = std::int64_t{1} << 16;  // 64 KiB
+  const auto n = static_cast<std::int64_t>(bytes);
+  const std::int64_t parts = (n + part - 1) / part;
+  loops::in_parts(parts, loops::threads_for(n / 8), [&](std::int64_t begin, std::int64_t end) {
+    const std::int64_t first = begin * part, last = std::min(n, end * part);
+    if (last > first) std::memset(bytes_of + first, 0, static_cast<std::size_t>(last - first));
+  });
+}
 }  // namespace
 
 std::int64_t field_bytes_in_use() { return bytes_in_use.load(); }
@@ -56,6 +74,7 @@ void *allocate_field_bytes(std::size_t bytes) {
   void *p = fftw_malloc(bytes == 0 ? 1 : bytes);
   if (p == nullptr) throw std::bad_alloc();
   advise_huge_pages(p, bytes);
+  zero_on_loop_threads(p, bytes);
   raise_peak(bytes_in_use.fetch_add(static_cast<std::int64_t>(bytes)) +
              static_cast<std::int64_t>(bytes));
   return p;

@@ -7,6 +7,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <new>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace asp {
@@ -19,6 +21,8 @@ void reset_field_bytes_peak();
 // would pass it throws std::bad_alloc, so that tests can make memory run out at a chosen point.
 void set_field_bytes_limit(std::int64_t bytes);
 
+// Memory aligned for FFTW, zeroed by the calling thread's loop threads (core/threads.hpp), so
+// that a large field's pages are first touched, and faulted in, on all of them.
 void *allocate_field_bytes(std::size_t bytes);
 void free_field_bytes(void *pointer, std::size_t bytes) noexcept;
 
@@ -34,6 +38,21 @@ struct FieldAllocator {
     return static_cast<T *>(allocate_field_bytes(n * sizeof(T)));
   }
   void deallocate(T *p, std::size_t n) noexcept { free_field_bytes(p, n * sizeof(T)); }
+  // The memory comes zeroed: a value-initialised element of a trivial type (a Field(n)'s
+  // doubles) is left as it is instead of being zeroed again, on one thread. Other types, and
+  // elements given a value, are constructed as usual.
+  template <class U>
+  void construct(U *p) noexcept(std::is_nothrow_default_constructible<U>::value) {
+    if (std::is_trivially_default_constructible<U>::value) {
+      ::new (static_cast<void *>(p)) U;
+    } else {
+      ::new (static_cast<void *>(p)) U();
+    }
+  }
+  template <class U, class... Args>
+  void construct(U *p, Args &&...args) {
+    ::new (static_cast<void *>(p)) U(std::forward<Args>(args)...);
+  }
   template <class U>
   bool operator==(const FieldAllocator<U> &) const noexcept { return true; }
   template <class U>

@@ -1,14 +1,18 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// The fields' allocator: it counts what it holds, and asks for transparent huge pages for
-// large fields (on Linux, where the kernel's per-mapping flags show the request).
+// The fields' allocator: it counts what it holds, asks for transparent huge pages for large
+// fields (on Linux, where the kernel's per-mapping flags show the request), and hands out
+// zeroed memory, written on the loop threads, so that a Field(n) is zero without a second,
+// serial pass.
 #include <gtest/gtest.h>
 
+#include <complex>
 #include <cstdint>
 #include <fstream>
 #include <sstream>
 #include <string>
 
 #include "core/aligned_field.hpp"
+#include "core/threads.hpp"
 
 namespace {
 
@@ -54,6 +58,25 @@ TEST(FieldAllocator, AsksForHugePagesForLargeFields) {
   const asp::Field small(std::size_t{8} << 10);
   const std::string small_flags = mapping_flags(small.data());
   EXPECT_EQ(small_flags.find(" hg"), std::string::npos) << small_flags;
+}
+
+// Value-initialised elements are zero, on one thread or several, small or large, also where
+// the memory held other values before (a freed field's); elements given a value have it.
+TEST(FieldAllocator, ValueInitialisedFieldsAreZero) {
+  for (int threads : {1, 2}) {
+    const asp::ThreadScope scope(threads);
+    for (std::size_t n : {std::size_t{1}, std::size_t{1000}, std::size_t{3} << 20}) {
+      for (int round = 0; round < 2; ++round) {
+        asp::Field f(n);
+        for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(f[i], 0.0) << threads << " " << n << " " << i;
+        for (std::size_t i = 0; i < n; ++i) f[i] = -1.5;  // what the next round's memory may hold
+      }
+      const asp::Field filled(n, 2.5);
+      for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(filled[i], 2.5) << i;
+      const asp::Spectrum spectrum(n);
+      for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(spectrum[i], std::complex<double>(0.0)) << i;
+    }
+  }
 }
 
 }  // namespace
