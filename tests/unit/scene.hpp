@@ -2,9 +2,15 @@
 // Small helpers to set up scenes in the internal tests.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <cmath>
+#include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
+
+#include "core/aligned_field.hpp"
 
 #include "core/grid.hpp"
 #include "physics/system.hpp"
@@ -93,6 +99,32 @@ double max_abs_difference(const A &a, const B &b) {
 inline double periodic_distance(double x, double l) {
   double d = std::fmod(std::fabs(x), l);
   return d > 0.5 * l ? l - d : d;
+}
+
+// A solve with `algorithm` on the gap of a 64^2 rough surface with adhesion, under
+// penetration control: the bytes per pixel its fields held beyond the system's (the
+// allocator's peak), after checking that it converged and that the pressure it may have held
+// as work is the solution's (finite, tensile or zero wherever the gap is open). For the
+// memory tests of the solvers that borrow the system's pressure array.
+inline double adhesive_gap_solve_bytes_per_pixel(const char *algorithm) {
+  auto grid = grid_2d(64, 64, 1.0, 1.0);
+  const auto h = rough_surface(*grid, 5, 0.1);
+  asp::System system(grid, 1.0);
+  system.set_topography(h.data());
+  system.set_adhesion(1e-4, 0.01);
+  asp::Solver solver(algorithm);
+  solver.set_option("variable", std::string("gap"));
+  asp::reset_field_bytes_peak();
+  const std::int64_t before = asp::field_bytes_in_use();
+  solver.solve(system, asp::Control::penetration, 0.004);
+  const double per_pixel = static_cast<double>(asp::field_bytes_peak() - before) / (64.0 * 64.0);
+  EXPECT_TRUE(solver.report().converged()) << algorithm << ": error " << solver.report().error;
+  EXPECT_GT(system.contact_fraction(), 0.0) << algorithm;
+  for (std::size_t i = 0; i < system.state().pressure.size(); ++i) {
+    EXPECT_TRUE(std::isfinite(system.state().pressure[i])) << algorithm << " " << i;
+    if (system.state().gap[i] > 0.0) EXPECT_LE(system.state().pressure[i], 0.0) << algorithm << " " << i;
+  }
+  return per_pixel;
 }
 
 }  // namespace asp_test
