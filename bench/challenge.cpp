@@ -21,8 +21,8 @@
 //                           [--penetration D | --mean-gap G] [--tolerance T]
 //                           [--max-iterations K] [--no-pair] [--estimate]
 //        (defaults: 16384, the library's default threads, bugnicourt:gap, 1.5e-6 m, 1e-6,
-//         100000, measured FFT plans (--estimate: FFTW_ESTIMATE, which saves the planning's
-//         minutes at 16384^2))
+//         100000, measured FFT plans (--estimate: FFTW_ESTIMATE, which saves the planning,
+//         about 40 s at 16384^2, for a pair 1.6 times slower there))
 #include <chrono>
 #include <cmath>
 #include <cstdio>
