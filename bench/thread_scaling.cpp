@@ -8,9 +8,9 @@
 // solves. The scenes are bench/scaling_scene.hpp's.
 //
 // usage: asperity_thread_scaling [--size N]... [--algorithm NAME]... [--threads T]
-//                                [--iterations K] [--repeats R]
+//                                [--iterations K] [--repeats R] [--estimate]
 //        (defaults: 2048 and 4096; pk, bugnicourt and lbfgs_fourier; 2 threads; 40
-//         iterations; the best of 3 solves)
+//         iterations; the best of 3 solves; measured plans, --estimate for FFTW_ESTIMATE)
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -29,9 +29,13 @@ struct Run {
   double pair = 0.0;        // seconds of one FFT pair with the same threads
 };
 
+// Plans for the solver and for the reference pair alike: measured (the library's default) or,
+// with --estimate, FFTW_ESTIMATE, which skips the planning but gives slower transforms.
+bool estimate_plans = false;
+
 std::shared_ptr<asp::Grid> make_grid(std::int64_t n, int threads) {
   auto grid = asp::Grid::create(2, n, n, static_cast<double>(n), static_cast<double>(n));
-  grid->set_fft_planning(asp::FftPlanning::estimate);
+  if (estimate_plans) grid->set_fft_planning(asp::FftPlanning::estimate);
   grid->set_threads(threads);
   return grid;
 }
@@ -69,10 +73,11 @@ int main(int argc, char **argv) {
     else if (arg == "--threads" && has_value) threads = std::atoi(argv[++i]);
     else if (arg == "--iterations" && has_value) iterations = std::atoi(argv[++i]);
     else if (arg == "--repeats" && has_value) repeats = std::atoi(argv[++i]);
+    else if (arg == "--estimate") estimate_plans = true;
     else {
       std::fprintf(stderr,
                    "usage: %s [--size N]... [--algorithm NAME]... [--threads T] "
-                   "[--iterations K] [--repeats R]\n",
+                   "[--iterations K] [--repeats R] [--estimate]\n",
                    argv[0]);
       return 2;
     }
