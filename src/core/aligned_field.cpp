@@ -46,10 +46,10 @@ void advise_huge_pages(void *p, std::size_t bytes) {
 #endif
 }
 
-// Fresh pages are faulted in, and cleared by the kernel, where they are first written: on
-// one thread, the serial zeroing of a solve's work arrays took a fifth of a 20-iteration
-// lbfgs_fourier solve at 2048^2 and held its two-thread efficiency to 76 % (102 % over 60
-// iterations). Written in parallel parts, as the loops later read them.
+// Fresh pages are faulted in, and cleared by the kernel, where they are first written. When
+// std::vector zeroed a solve's work arrays on one thread, that clearing (a fifth of the time
+// of a 20-iteration lbfgs_fourier thread-scaling run at 2048^2) ran on one core whatever the
+// solve's threads; written in parallel parts, it is shared by them.
 void zero_on_loop_threads(void *p, std::size_t bytes) {
   auto *bytes_of = static_cast<unsigned char *>(p);
   constexpr std::int64_t part = std::int64_t{1} << 16;  // 64 KiB
