@@ -12,10 +12,8 @@
 //        (defaults: 2048 and 4096; pk, bugnicourt and lbfgs_fourier; 2 threads; 40
 //         iterations; the best of 3 solves; measured plans, --estimate for FFTW_ESTIMATE)
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <string>
 #include <vector>
 
@@ -51,9 +49,10 @@ Run measure(const char *algorithm, std::int64_t n, int threads, int iterations, 
   for (int k = 0; k < repeats; ++k) {
     scene.system->reset_state();
     const bench::SolveTimes t = bench::timed_solve(solver, scene);
-    r.times.setup = k == 0 ? t.setup : std::min(r.times.setup, t.setup);
-    r.times.per_iteration = k == 0 ? t.per_iteration : std::min(r.times.per_iteration, t.per_iteration);
-    r.times.total = k == 0 ? t.total : std::min(r.times.total, t.total);
+    const auto least = [k](double &best, double now) { best = k == 0 ? now : std::min(best, now); };
+    least(r.times.setup, t.setup);
+    least(r.times.per_iteration, t.per_iteration);
+    least(r.times.total, t.total);
   }
   r.pair = bench::fft_pair_seconds(*grid);
   return r;
