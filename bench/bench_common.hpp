@@ -10,6 +10,8 @@
 
 #include "core/aligned_field.hpp"
 #include "core/grid.hpp"
+#include "core/loops.hpp"
+#include "core/threads.hpp"
 
 namespace bench {
 
@@ -56,6 +58,31 @@ inline double fft_pair_seconds(const asp::Grid &grid, std::int64_t nx, std::int6
 
 inline double fft_pair_seconds(const asp::Grid &grid) {
   return fft_pair_seconds(grid, grid.nx(), grid.ny());
+}
+
+// Best of several timed passes z = x + a y over three fields of the grid's size, on the grid's
+// threads, over 3: the time to stream one field (8 bytes per pixel, read or written) between
+// memory and the cores. An iteration's element-wise passes cost about this much per array
+// they read or write, once the fields no longer fit in the cache.
+inline double field_stream_seconds(const asp::Grid &grid) {
+  const auto n = grid.n_pixels();
+  asp::Field x(static_cast<std::size_t>(n)), y(x.size()), z(x.size());
+  const asp::ThreadScope threads(grid.threads());
+  asp::loops::for_each(n, [&](std::int64_t i) {
+    x[i] = static_cast<double>(i % 5);
+    y[i] = static_cast<double>(i % 3);
+  });
+  const int repeats = std::max(3, static_cast<int>(2e7 / static_cast<double>(n)));
+  double best = 1e300;
+  for (int batch = 0; batch < 5; ++batch) {
+    const auto start = std::chrono::steady_clock::now();
+    for (int k = 0; k < repeats; ++k) {
+      const double a = 1.0 / (k + 2);
+      asp::loops::for_each(n, [&](std::int64_t i) { z[i] = x[i] + a * y[i]; });
+    }
+    best = std::min(best, seconds_since(start) / repeats / 3.0);
+  }
+  return best;
 }
 
 }  // namespace bench

@@ -9,7 +9,13 @@
 // ratio, the iterations to the tolerance, the memory per pixel of the box that the system and
 // the solve hold, and the cost of recording the history (best solve with history on against
 // best with it off, in per cent). It also prints the objective evaluations of a solve, the
-// time per evaluation and its ratio to the FFT pair.
+// time per evaluation and its ratio to the FFT pair. Last, where the iteration's time goes:
+// `in FFTs`, its transforms in FFT pairs (the solver's count of transforms per iteration,
+// halved); `stream`, the time to stream one field of the grid (8 bytes per pixel read or
+// written, bench::field_stream_seconds) in FFT pairs; and `streams`, the rest of the
+// iteration's time in such streams (what its element-wise passes cost, in the fields they
+// read and write). A target in FFT pairs per iteration can be met only if the transforms the
+// algorithm needs plus the fields its passes must touch, at this price, stay under it.
 //
 // With --penetration the solver runs under penetration control, at the penetration of pk's
 // solution at the benchmark's mean pressure (so the contact fraction is the same); without
@@ -83,9 +89,9 @@ int main(int argc, char **argv) {
                                   : "mean pressure",
               mean_pressure, tolerance, estimate ? "ESTIMATE" : "MEASURE",
               free ? ", of the padded 2N x 2N grid" : "");
-  std::printf("%6s %10s %12s %12s %7s %6s %6s %9s %7s %9s %9s %8s %9s\n", "N", "plan s",
-              "FFT pair ms", "iter ms", "ratio", "iters", "evals", "eval ms", "ratio",
-              "solve s", "contact", "B/pixel", "history");
+  std::printf("%6s %10s %12s %12s %7s %6s %6s %9s %7s %9s %9s %8s %9s %8s %8s %8s\n", "N",
+              "plan s", "FFT pair ms", "iter ms", "ratio", "iters", "evals", "eval ms", "ratio",
+              "solve s", "contact", "B/pixel", "history", "in FFTs", "stream", "streams");
   for (long n : sizes) {
     // The reference: a pair planned with FFTW_MEASURE, and how long that planning took. With
     // the default planning it is the solver's own grid, so that both time the same plans
@@ -101,6 +107,7 @@ int main(int argc, char **argv) {
     reference->real_fft(transform_n, transform_n);
     const double planning = seconds_since(plan_start);
     const double fft = fft_pair_seconds(*reference, transform_n, transform_n);
+    const double stream = bench::field_stream_seconds(*grid);
 
     asp::SelfAffineParameters params;
     params.hurst = 0.8;
@@ -161,12 +168,18 @@ int main(int argc, char **argv) {
     const double history_cost = 100.0 * (with_history.seconds / r.seconds - 1.0);
     const double per_iteration = r.seconds / std::max<std::int64_t>(r.iterations, 1);
     const double per_evaluation = r.seconds / std::max(evaluations, 1.0);
+    // The iteration split: its transforms in pairs (from the solver's own count), and the rest
+    // of its time in field streams, the element-wise passes' currency.
+    const double in_transforms = 0.5 * static_cast<double>(r.transforms) /
+                                 static_cast<double>(std::max<std::int64_t>(r.iterations, 1));
+    const double rest_in_streams = (per_iteration / fft - in_transforms) * fft / stream;
     std::printf("%6ld %10.2f %12.3f %12.3f %7.2f %6lld %6.0f %9.3f %7.2f %9.2f %9.4f %8.1f "
-                "%+8.1f%%%s\n",
+                "%+8.1f%% %8.2f %8.3f %8.1f%s\n",
                 n, planning, 1e3 * fft, 1e3 * per_iteration, per_iteration / fft,
                 static_cast<long long>(r.iterations), evaluations, 1e3 * per_evaluation,
                 per_evaluation / fft, r.seconds, system.contact_fraction(), bytes_per_pixel,
-                history_cost, r.converged() ? "" : "  (not converged)");
+                history_cost, in_transforms, stream / fft, rest_in_streams,
+                r.converged() ? "" : "  (not converged)");
     std::fflush(stdout);
   }
   return 0;
