@@ -16,8 +16,9 @@
 // adhesion, w = 50 mJ/m^2 and rho = 2.071 nm (Tabor parameter 3 for that curvature radius);
 // every solver solves under penetration control at the penetration given (default 160 nm:
 // 6.2 % repulsive contact on this 2048^2 surface, found by trying penetrations; the surface,
-// and so this number, changes with the generator and the grid), then those that offer it under mean-gap control
-// at the mean gap of the first solution (Bugnicourt et al.'s OUT-LIN imposes the mean gap).
+// and so this number, changes with the generator and the grid), then those that offer it
+// under mean-gap control at the mean gap of the first solution (Bugnicourt et al.'s OUT-LIN
+// imposes the mean gap).
 //
 // Printed per solver: iterations, objective evaluations, FFTs, seconds, time per iteration
 // and per evaluation in FFT pairs (the pair timed in the same run with the grid's plans), the
@@ -28,7 +29,7 @@
 //
 // With --history each solve records its history, and a second line per solver gives the
 // iterations after which the error stays at or below 1e-2, 1e-3, 1e-4 and 1e-6, and after
-// which the contact fraction stays within 1 % and 0.1 % of its final value ('-': never). The
+// which the contact fraction stays within 1 % and 0.1 % of its final value (-1: never). The
 // thesis counts Bugnicourt et al.'s OUT-LIN to "a contact area of roughly 6 %" (its Fig. 21),
 // not to an error of ours; these columns let the two be set side by side. Recording costs a
 // few per cent of the time.
