@@ -172,7 +172,7 @@ int main(int argc, char **argv) {
     // of its time in field streams, the element-wise passes' currency.
     const double in_transforms = 0.5 * static_cast<double>(r.transforms) /
                                  static_cast<double>(std::max<std::int64_t>(r.iterations, 1));
-    const double rest_in_streams = (per_iteration / fft - in_transforms) * fft / stream;
+    const double rest_in_streams = (per_iteration - in_transforms * fft) / stream;
     std::printf("%6ld %10.2f %12.3f %12.3f %7.2f %6lld %6.0f %9.3f %7.2f %9.2f %9.4f %8.1f "
                 "%+8.1f%% %8.2f %8.3f %8.1f%s\n",
                 n, planning, 1e3 * fft, 1e3 * per_iteration, per_iteration / fft,
