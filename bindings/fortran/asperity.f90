@@ -93,7 +93,8 @@ module asperity
       ASP_ERR_UNSUPPORTED = 5, ASP_ERR_INVALID_STATE = 6, ASP_ERR_FFT = 7, &
       ASP_ERR_CALLBACK = 8, ASP_ERR_INTERNAL = 9, ASP_ERR_IO = 10
   ! FFT planning
-  integer(c_int), parameter, public :: ASP_FFT_ESTIMATE = 101, ASP_FFT_MEASURE = 102
+  integer(c_int), parameter, public :: ASP_FFT_ESTIMATE = 101, ASP_FFT_MEASURE = 102, &
+                                        ASP_FFT_PATIENT = 103
   ! Self-affine normalisation
   integer(c_int), parameter, public :: ASP_RMS_HEIGHT = 201, ASP_RMS_SLOPE = 202
   ! Scalar results

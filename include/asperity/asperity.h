@@ -165,12 +165,22 @@ ASP_EXPORT int asp_grid_get_box(const asp_grid *grid, double *lx, double *ly);
  *                     of the same shape, in the same process, plan at once;
  *                     asp_fft_export_wisdom and asp_fft_import_wisdom carry that knowledge
  *                     across processes.
+ *   ASP_FFT_PATIENT   times many more candidates (FFTW_PATIENT): sometimes a faster plan,
+ *                     for a planning several times longer; worth it for long runs whose
+ *                     wisdom is kept.
  *   ASP_FFT_ESTIMATE  plans at once from heuristics; its transforms are as fast on some
  *                     machines and sizes and up to about 2x slower on others.
+ * Planning is bounded in time, so that a busy machine (on which every timed candidate takes
+ * longer) cannot make it last: FFTW stops looking after 1 s per transform plan with
+ * ASP_FFT_MEASURE and 15 s with ASP_FFT_PATIENT, and keeps the fastest plan found so far
+ * (fftw_set_timelimit, put back to FFTW's default of none afterwards; plans of distributed
+ * grids, which FFTW-MPI makes together on every process, are not bounded). A grid's shape
+ * has up to two plans each way, so its first planning costs at most a few seconds.
  * Plans are made on first use, so set this right after creating the grid; once plans exist
  * the call returns ASP_ERR_INVALID_STATE. */
 #define ASP_FFT_ESTIMATE 101
 #define ASP_FFT_MEASURE 102
+#define ASP_FFT_PATIENT 103
 ASP_EXPORT int asp_grid_set_fft_planning(asp_grid *grid, int planning);
 
 /* The threads of the grid's FFTs (FFTW's OpenMP threads) and of the element-wise passes of

@@ -20,6 +20,7 @@ struct Constant {
 const Constant constants[] = {
     ASP_CONSTANT(ASP_FFT_ESTIMATE, planning),
     ASP_CONSTANT(ASP_FFT_MEASURE, planning),
+    ASP_CONSTANT(ASP_FFT_PATIENT, planning),
     ASP_CONSTANT(ASP_RMS_HEIGHT, normalisation),
     ASP_CONSTANT(ASP_RMS_SLOPE, normalisation),
     ASP_CONSTANT(ASP_CONTACT_FRACTION, scalar_key),

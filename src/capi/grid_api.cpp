@@ -57,8 +57,9 @@ int asp_grid_set_fft_planning(asp_grid *grid, int planning) {
   return guarded("asp_grid_set_fft_planning", [&] {
     asp::require_not_null(grid, "grid");
     asp::capi::require_member(planning, asp::capi::Family::planning, "planning");
-    grid->grid->set_fft_planning(planning == ASP_FFT_MEASURE ? asp::FftPlanning::measure
-                                                             : asp::FftPlanning::estimate);
+    grid->grid->set_fft_planning(planning == ASP_FFT_PATIENT   ? asp::FftPlanning::patient
+                                 : planning == ASP_FFT_MEASURE ? asp::FftPlanning::measure
+                                                               : asp::FftPlanning::estimate);
   });
 }
 

@@ -4,7 +4,10 @@
 #include <fftw3.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
 #include <mutex>
+#include <system_error>
 
 #include "core/error.hpp"
 #include "core/fft_planner.hpp"
@@ -45,6 +48,7 @@ RealFft::RealFft(std::int64_t nx, std::int64_t ny, FftPlanning planning, int thr
 
   std::lock_guard<std::mutex> lock(fft_planner::mutex());
   const fft_planner::PlannerThreads planner_threads(threads, nx * ny);
+  const fft_planner::PlanningTimeLimit time_limit(planning);
   fftw_plan r2c = fftw_plan_dft_r2c(rank, dims, real.data(), c, fft_planner::flags_of(planning));
   fftw_plan c2r =
       fftw_plan_dft_c2r(rank, dims, c, real.data(), fft_planner::flags_of(planning) | FFTW_DESTROY_INPUT);
@@ -83,6 +87,7 @@ PaddedRealFft::PaddedRealFft(std::int64_t nx, std::int64_t ny, FftPlanning plann
 
   std::lock_guard<std::mutex> lock(fft_planner::mutex());
   const fft_planner::PlannerThreads planner_threads(threads, 4 * nx * ny);
+  const fft_planner::PlanningTimeLimit time_limit(planning);
   // Rows along x: ny of them, 2nx reals each, contiguous; out nx+1 complex each, contiguous.
   fftw_plan r2c = fftw_plan_many_dft_r2c(1, &width, rows, real.data(), nullptr, 1, width, c,
                                          nullptr, 1, columns, flags);
@@ -167,6 +172,7 @@ HalfComplexFft::HalfComplexFft(std::int64_t nx, std::int64_t ny, FftPlanning pla
 
   std::lock_guard<std::mutex> lock(fft_planner::mutex());
   const fft_planner::PlannerThreads planner_threads(threads, nx * ny);
+  const fft_planner::PlanningTimeLimit time_limit(planning);
   fftw_plan r2hc =
       fftw_plan_r2r(rank, dims, in.data(), out.data(), forward_kinds, fft_planner::flags_of(planning));
   fftw_plan hc2r = fftw_plan_r2r(rank, dims, out.data(), in.data(), backward_kinds,
@@ -265,12 +271,31 @@ void export_fft_wisdom(const std::string &path) {
 }
 
 void import_fft_wisdom(const std::string &path) {
+  // Read here, not by FFTW, so that what is not a plain file of a sensible size (a device, a
+  // pipe, a file grown without bound) is refused before it is read.
+  const std::string where = "argument 'path': FFTW wisdom '" + path + "' ";
+  std::error_code error;
+  const auto status = std::filesystem::status(path, error);
+  if (error || !std::filesystem::exists(status))
+    throw Error(Status::io, where + "cannot be read (missing or unreadable)");
+  if (!std::filesystem::is_regular_file(status))
+    throw Error(Status::io, where + "is not a regular file");
+  std::ifstream in(path, std::ios::binary);
+  std::string text(static_cast<std::size_t>(largest_wisdom_bytes) + 1, '\0');
+  in.read(&text[0], static_cast<std::streamsize>(text.size()));
+  if (in.bad() || (!in.eof() && in.gcount() == 0))
+    throw Error(Status::io, where + "cannot be read");
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  if (static_cast<std::int64_t>(text.size()) > largest_wisdom_bytes)
+    throw Error(Status::io, where + "is larger than " + std::to_string(largest_wisdom_bytes) +
+                                " bytes, more than wisdom of any number of plans holds");
   std::lock_guard<std::mutex> lock(fft_planner::mutex());
   fft_planner::threads_ready();
-  if (fftw_import_wisdom_from_filename(path.c_str()) == 0)
-    throw Error(Status::io,
-                "argument 'path': cannot read FFTW wisdom from '" + path +
-                    "' (missing, unreadable, or not wisdom of this FFTW)");
+  // FFTW refuses text that does not parse, or that another version of FFTW wrote, as a
+  // whole: what the process knew before is kept.
+  if (fftw_import_wisdom_from_string(text.c_str()) == 0)
+    throw Error(Status::io, where + "is not wisdom of this FFTW (" + fftw_version +
+                                "): damaged, or written by another version");
 }
 
 }  // namespace asp

@@ -14,7 +14,7 @@
 
 namespace asp {
 
-enum class FftPlanning { estimate, measure };
+enum class FftPlanning { estimate, measure, patient };
 
 // The real-to-complex transform of a grid and back, on this process's rows of it: the half
 // spectrum is halved along x, S[kx + (nx/2+1)*ky]. Serial (RealFft) or distributed over
@@ -140,6 +140,10 @@ class RealLineFft {
 };
 
 // FFTW's accumulated planning knowledge, to and from a file (throws Error(io) naming it).
+// Importing refuses, before reading, what is not a regular file or holds more than
+// largest_wisdom_bytes (the wisdom of hundreds of grid shapes is tens of kilobytes), and,
+// after, what FFTW does not read as its own wisdom; the process's wisdom is then unchanged.
+constexpr std::int64_t largest_wisdom_bytes = std::int64_t{16} << 20;
 void export_fft_wisdom(const std::string &path);
 void import_fft_wisdom(const std::string &path);
 

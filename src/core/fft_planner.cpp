@@ -14,8 +14,23 @@ std::mutex &mutex() {
 }
 
 unsigned flags_of(FftPlanning planning) {
-  return planning == FftPlanning::measure ? FFTW_MEASURE : FFTW_ESTIMATE;
+  switch (planning) {
+    case FftPlanning::patient:
+      return FFTW_PATIENT;
+    case FftPlanning::measure:
+      return FFTW_MEASURE;
+    case FftPlanning::estimate:
+      break;
+  }
+  return FFTW_ESTIMATE;
 }
+
+PlanningTimeLimit::PlanningTimeLimit(FftPlanning planning) {
+  if (planning == FftPlanning::measure) fftw_set_timelimit(measure_seconds);
+  if (planning == FftPlanning::patient) fftw_set_timelimit(patient_seconds);
+}
+
+PlanningTimeLimit::~PlanningTimeLimit() { fftw_set_timelimit(FFTW_NO_TIMELIMIT); }
 
 bool threads_ready() {
 #ifdef ASPERITY_FFTW_THREADS

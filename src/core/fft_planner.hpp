@@ -19,6 +19,25 @@ std::mutex &mutex();
 // FFTW's planner flags for a planning choice.
 unsigned flags_of(FftPlanning planning);
 
+// The most time FFTW may spend planning one transform (fftw_set_timelimit), in seconds:
+// measured plans of a grid shape then cost at most a few seconds however busy the machine
+// is (FFTW times its candidates by the wall clock, and on a busy machine each takes longer),
+// patient ones a minute. Estimated plans take no time to speak of.
+constexpr double measure_seconds = 1.0;
+constexpr double patient_seconds = 15.0;
+
+// Plans of a serial transform made while it lives are bounded so. FFTW's time limit is
+// process-wide state without a getter: it is set under the lock and put back to FFTW's
+// default, none, afterwards. Distributed plans are made without it: FFTW-MPI plans together,
+// and processes whose clocks stopped their search at different candidates would disagree.
+class PlanningTimeLimit {
+ public:
+  explicit PlanningTimeLimit(FftPlanning planning);
+  ~PlanningTimeLimit();
+  PlanningTimeLimit(const PlanningTimeLimit &) = delete;
+  PlanningTimeLimit &operator=(const PlanningTimeLimit &) = delete;
+};
+
 // FFTW's threads, set up once (call under the lock) before the first threaded plan or the
 // first wisdom import or export: wisdom may hold threaded plans, which FFTW reads only once
 // its threads are set up. False if the build has none or FFTW could not set them up.

@@ -130,9 +130,9 @@ const RealTransform &Grid::fft() const {
   if (!distributed_plan_) {
     // FFTW-MPI plans together: a process that measures while another estimates would wait
     // for it forever. Refused on every process instead.
-    const double measure = planning_ == FftPlanning::measure ? 1.0 : 0.0;
+    const double planning = static_cast<double>(planning_);
     double theirs = 0.0;
-    const int differing = partition_->first_differing(&measure, 1, &theirs);
+    const int differing = partition_->first_differing(&planning, 1, &theirs);
     if (differing >= 0)
       throw Error(Status::invalid_state,
                   "on process " + std::to_string(differing) + " of " +

@@ -1,0 +1,223 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#include "core/thread_pool.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <exception>
+#include <memory>
+#include <mutex>
+#include <system_error>
+#include <thread>
+#include <vector>
+
+namespace asp {
+namespace thread_pool {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// How long a helper looks for the next loop after its last job before it goes to sleep. A
+// solve's loops follow each other within microseconds (what lies between them is a transform
+// or a few scalar operations), so on an idle machine the helpers are awake for the next one;
+// on a busy machine a helper that is not needed costs the other processes this much and then
+// nothing.
+constexpr auto spin_time = std::chrono::microseconds(50);
+
+// The most helpers the pool starts, whatever a grid asks for.
+constexpr int most_helpers = 255;
+
+// True on the pool's helpers, and on a caller while it runs jobs: a loop started there runs
+// on its thread alone.
+thread_local bool inside_job = false;
+
+class InsideJob {
+ public:
+  InsideJob() : previous_(inside_job) { inside_job = true; }
+  ~InsideJob() { inside_job = previous_; }
+  InsideJob(const InsideJob &) = delete;
+  InsideJob &operator=(const InsideJob &) = delete;
+
+ private:
+  bool previous_;
+};
+
+void relax() {
+#if defined(__x86_64__) || defined(__i386__)
+  __builtin_ia32_pause();
+#elif defined(__aarch64__)
+  asm volatile("yield");
+#endif
+}
+
+// One parallel loop: its jobs, who takes the next one, how many have ended.
+struct Loop {
+  Loop(Job j, void *c, std::int64_t n) : job(j), context(c), jobs(n) {}
+
+  // Takes jobs until none is left, and says so when it ended the last one.
+  void take_jobs() {
+    std::int64_t ended_here = 0;
+    for (std::int64_t i; (i = next.fetch_add(1, std::memory_order_relaxed)) < jobs; ++ended_here) {
+      try {
+        job(context, i);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (!error) error = std::current_exception();
+      }
+    }
+    if (ended_here > 0 &&
+        ended.fetch_add(ended_here, std::memory_order_acq_rel) + ended_here == jobs) {
+      std::lock_guard<std::mutex> lock(mutex);
+      all_ended.notify_all();
+    }
+  }
+
+  // Returns once every job has ended: a few microseconds looking, then asleep.
+  void wait() {
+    const auto until = Clock::now() + spin_time;
+    while (ended.load(std::memory_order_acquire) < jobs)
+      if (Clock::now() < until) {
+        relax();
+      } else {
+        std::unique_lock<std::mutex> lock(mutex);
+        all_ended.wait(lock, [&] { return ended.load(std::memory_order_acquire) == jobs; });
+      }
+  }
+
+  const Job job;
+  void *const context;
+  const std::int64_t jobs;
+  std::atomic<std::int64_t> next{0};
+  std::atomic<std::int64_t> ended{0};
+  std::mutex mutex;  // for error and the caller's sleep
+  std::condition_variable all_ended;
+  std::exception_ptr error;
+};
+
+class Pool {
+ public:
+  static Pool &instance() {
+    static Pool pool;
+    return pool;
+  }
+
+  ~Pool() {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      stopping_ = true;
+    }
+    wake_.notify_all();
+    for (std::thread &helper : helpers_) helper.join();
+  }
+
+  void run(int threads, std::int64_t jobs, Job job, void *context) {
+    const int wanted = static_cast<int>(
+        std::min<std::int64_t>({static_cast<std::int64_t>(threads) - 1, jobs - 1, most_helpers}));
+    // On the heap and shared: a helper woken late may still look at it (to find no job left)
+    // after this call has returned.
+    const auto loop = std::make_shared<Loop>(job, context, jobs);
+    std::unique_lock<std::mutex> busy(busy_, std::defer_lock);
+    const int helpers = wanted > 0 && !inside_job && busy.try_lock() ? start_helpers(wanted) : 0;
+    if (helpers > 0) offer(loop, helpers);
+    {
+      const InsideJob mark;
+      loop->take_jobs();
+    }
+    if (helpers > 0) {
+      withdraw();
+      loop->wait();
+    }
+    if (loop->error) std::rethrow_exception(loop->error);
+  }
+
+  int started() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return static_cast<int>(helpers_.size());
+  }
+
+ private:
+  Pool() = default;
+
+  // Starts helpers until there are `wanted` (called by the one caller that holds busy_).
+  // Returns how many there are: fewer when the system refuses a thread.
+  int start_helpers(int wanted) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    try {
+      while (static_cast<int>(helpers_.size()) < wanted)
+        helpers_.emplace_back([this] { helper_main(); });
+    } catch (const std::system_error &) {
+    }
+    return std::min(wanted, static_cast<int>(helpers_.size()));
+  }
+
+  // Makes the loop the one `helpers` helpers join, waking those asleep.
+  void offer(const std::shared_ptr<Loop> &loop, int helpers) {
+    int asleep;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      current_ = loop;
+      wanted_ = helpers;
+      generation_.fetch_add(1, std::memory_order_release);
+      asleep = sleeping_;
+    }
+    for (int i = 0; i < std::min(helpers, asleep); ++i) wake_.notify_one();
+  }
+
+  // No helper joins the loop from now on (its jobs are all taken; those that joined finish
+  // what they took).
+  void withdraw() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    current_ = nullptr;
+    wanted_ = 0;
+  }
+
+  void helper_main() {
+    inside_job = true;
+    std::uint64_t seen = generation_.load(std::memory_order_acquire);
+    for (;;) {
+      const auto until = Clock::now() + spin_time;
+      while (generation_.load(std::memory_order_acquire) == seen && Clock::now() < until) relax();
+      std::shared_ptr<Loop> loop;
+      {
+        std::unique_lock<std::mutex> lock(mutex_);
+        if (generation_.load(std::memory_order_relaxed) == seen && !stopping_) {
+          ++sleeping_;
+          wake_.wait(lock, [&] {
+            return stopping_ || generation_.load(std::memory_order_relaxed) != seen;
+          });
+          --sleeping_;
+        }
+        if (stopping_) return;
+        seen = generation_.load(std::memory_order_relaxed);
+        if (wanted_ > 0 && current_ != nullptr) {
+          --wanted_;
+          loop = current_;
+        }
+      }
+      if (loop) loop->take_jobs();
+    }
+  }
+
+  std::mutex busy_;  // held by the caller whose loop the helpers serve
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  std::vector<std::thread> helpers_;
+  std::atomic<std::uint64_t> generation_{0};
+  std::shared_ptr<Loop> current_;
+  int wanted_ = 0;
+  int sleeping_ = 0;
+  bool stopping_ = false;
+};
+
+}  // namespace
+
+void run(int threads, std::int64_t jobs, Job job, void *context) {
+  if (jobs <= 0) return;
+  Pool::instance().run(threads, jobs, job, context);
+}
+
+int helpers_started() { return Pool::instance().started(); }
+
+}  // namespace thread_pool
+}  // namespace asp
