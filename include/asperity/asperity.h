@@ -85,7 +85,9 @@
  * made on one grid may be solved at once from different threads (the grid's plans are shared
  * and FFTW executes them concurrently). One handle must not be used from two threads at once.
  * FFTW planning is serialised inside the library; the library never calls fftw_cleanup(), so
- * it coexists with other FFTW users in the process.
+ * it coexists with other FFTW users in the process. How many threads a solve itself uses,
+ * and how that behaves on a busy machine or inside a host's own threads, is said in one place:
+ * asp_grid_set_threads.
  */
 #ifndef ASPERITY_ASPERITY_H
 #define ASPERITY_ASPERITY_H
@@ -183,11 +185,26 @@ ASP_EXPORT int asp_grid_get_box(const asp_grid *grid, double *lx, double *ly);
 #define ASP_FFT_PATIENT 103
 ASP_EXPORT int asp_grid_set_fft_planning(asp_grid *grid, int planning);
 
-/* The threads of the grid's FFTs (FFTW's OpenMP threads) and of the element-wise passes of
- * every solve on it (OpenMP), threads >= 1. The default is the environment's
- * OMP_NUM_THREADS when it holds a positive whole number (the first of a list), else the
- * number of processors. A program that runs asperity inside its own threads or MPI ranks
- * keeps each grid to one thread with asp_grid_set_threads(grid, 1) (or OMP_NUM_THREADS=1).
+/* The threads of the grid's FFTs (FFTW's threads) and of the element-wise passes of every
+ * solve on it (the library's own threads), threads >= 1. The default, the one rule of the
+ * library:
+ *   1. ASPERITY_NUM_THREADS, when it holds a positive whole number (the first of a list);
+ *   2. else OMP_NUM_THREADS, read the same way;
+ *   3. else, on a grid of asperity_mpi.h, one thread per process (MPI codes run a process per
+ *      core); on any other grid, the processors the process may run on (its CPU affinity,
+ *      which taskset, cpusets and MPI launchers' binding narrow).
+ * The variables are read when the grid is created.
+ * Waiting threads sleep: a helper thread spins at most some tens of microseconds after a
+ * pass before it sleeps, and a pass never waits for a thread that has not started, because
+ * the calling thread takes the work of helpers the operating system has not run yet. On a
+ * machine whose cores are busy with other processes, a solve with the default count therefore
+ * takes about the time it takes on one thread (docs/performance.md, "A busy machine"), and on
+ * an idle machine it uses every core. A pass started while another thread of the process runs
+ * one (several solves at once, a host's own threads or OpenMP region) runs on its calling
+ * thread alone, so that concurrent solves never compete for the same helpers; FFTW's
+ * threaded transforms have their own sleeping workers. A program that runs asperity inside its
+ * own threads or MPI ranks may still keep each grid to one thread with
+ * asp_grid_set_threads(grid, 1) (or ASPERITY_NUM_THREADS=1), which spares the helpers' wake-ups.
  * The count is fixed when the plans are made: set it right after creating the grid (once
  * plans exist the call returns ASP_ERR_INVALID_STATE). Results with any count agree with
  * one thread to 1e-12 relative (tested for every solver): sums over the pixels are added in
@@ -214,9 +231,16 @@ ASP_EXPORT int asp_grid_get_slab(const asp_grid *grid, int64_t *local_ny, int64_
                                  int64_t *local_pixels);
 
 /* FFTW "wisdom": what planning with ASP_FFT_MEASURE has learnt in this process, saved to and
- * loaded from a file, so that repeated runs skip the planning. Importing adds to what is
- * known; a file written by another FFTW version or machine is accepted by FFTW only where it
- * applies. Returns ASP_ERR_IO (naming the path) when the file cannot be written or read. */
+ * loaded from a file, so that repeated runs skip the planning: a grid shape whose plans the
+ * wisdom holds is planned from it alone, timing nothing. Importing adds to what is known.
+ * Returns ASP_ERR_IO, naming the path and the problem, when the file cannot be written or
+ * read, and, on import, before reading it, when it is not a regular file (a device, a pipe,
+ * a directory) or is larger than 16 MiB (the wisdom of hundreds of shapes is tens of
+ * kilobytes), and after reading it, when FFTW does not read it as its own wisdom (damaged, or
+ * written by another FFTW version); a refused file changes nothing of what the process knew.
+ * Wisdom of another machine with the same FFTW version is accepted: its plans are correct
+ * but may be slower there. The asperity command keeps a wisdom file in the user's cache
+ * directory (docs/command.md). */
 ASP_EXPORT int asp_fft_export_wisdom(const char *path);
 ASP_EXPORT int asp_fft_import_wisdom(const char *path);
 

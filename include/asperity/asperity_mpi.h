@@ -36,8 +36,10 @@
  *   - A potential callback runs on each process for its pixels; if it fails on one, the
  *     solve fails on all (ASP_ERR_CALLBACK). A progress callback that asks to stop on one
  *     process stops the solve on all.
- *   - The grid's thread count defaults to OMP_NUM_THREADS when set, else 1 (one process per
- *     core is the usual layout); asp_grid_set_threads sets it as for any grid.
+ *   - The grid's thread count defaults to one per process (one process per core is the
+ *     usual layout of MPI codes), unless ASPERITY_NUM_THREADS or OMP_NUM_THREADS asks for
+ *     another (the rule of asp_grid_set_threads in asperity.h); asp_grid_set_threads sets it
+ *     as for any grid.
  *   - Results agree with one process to about 1e-10 relative and better: the sums over the
  *     processes are added in process order, and FFTW-MPI's transforms round differently from
  *     the serial ones.

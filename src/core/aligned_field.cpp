@@ -55,7 +55,7 @@ void zero_on_loop_threads(void *p, std::size_t bytes) {
   constexpr std::int64_t part = std::int64_t{1} << 16;  // 64 KiB
   const auto n = static_cast<std::int64_t>(bytes);
   const std::int64_t parts = (n + part - 1) / part;
-  loops::in_parts(parts, loops::threads_for(n / 8), [&](std::int64_t begin, std::int64_t end) {
+  loops::in_pieces(parts, 8, loops::threads_for(n / 8), [&](std::int64_t begin, std::int64_t end) {
     const std::int64_t first = begin * part, last = std::min(n, end * part);
     if (last > first) std::memset(bytes_of + first, 0, static_cast<std::size_t>(last - first));
   });

@@ -49,9 +49,12 @@ RealFft::RealFft(std::int64_t nx, std::int64_t ny, FftPlanning planning, int thr
   std::lock_guard<std::mutex> lock(fft_planner::mutex());
   const fft_planner::PlannerThreads planner_threads(threads, nx * ny);
   const fft_planner::PlanningTimeLimit time_limit(planning);
-  fftw_plan r2c = fftw_plan_dft_r2c(rank, dims, real.data(), c, fft_planner::flags_of(planning));
-  fftw_plan c2r =
-      fftw_plan_dft_c2r(rank, dims, c, real.data(), fft_planner::flags_of(planning) | FFTW_DESTROY_INPUT);
+  const unsigned flags = fft_planner::flags_of(planning);
+  fftw_plan r2c = fft_planner::plan(
+      flags, [&](unsigned f) { return fftw_plan_dft_r2c(rank, dims, real.data(), c, f); });
+  fftw_plan c2r = fft_planner::plan(flags | FFTW_DESTROY_INPUT, [&](unsigned f) {
+    return fftw_plan_dft_c2r(rank, dims, c, real.data(), f);
+  });
   require_plans(r2c, c2r);
   r2c_ = r2c;
   c2r_ = c2r;
@@ -89,15 +92,23 @@ PaddedRealFft::PaddedRealFft(std::int64_t nx, std::int64_t ny, FftPlanning plann
   const fft_planner::PlannerThreads planner_threads(threads, 4 * nx * ny);
   const fft_planner::PlanningTimeLimit time_limit(planning);
   // Rows along x: ny of them, 2nx reals each, contiguous; out nx+1 complex each, contiguous.
-  fftw_plan r2c = fftw_plan_many_dft_r2c(1, &width, rows, real.data(), nullptr, 1, width, c,
-                                         nullptr, 1, columns, flags);
-  fftw_plan c2r = fftw_plan_many_dft_c2r(1, &width, rows, c, nullptr, 1, columns, real.data(),
-                                         nullptr, 1, width, flags | FFTW_DESTROY_INPUT);
+  fftw_plan r2c = fft_planner::plan(flags, [&](unsigned f) {
+    return fftw_plan_many_dft_r2c(1, &width, rows, real.data(), nullptr, 1, width, c, nullptr, 1,
+                                  columns, f);
+  });
+  fftw_plan c2r = fft_planner::plan(flags | FFTW_DESTROY_INPUT, [&](unsigned f) {
+    return fftw_plan_many_dft_c2r(1, &width, rows, c, nullptr, 1, columns, real.data(), nullptr,
+                                  1, width, f);
+  });
   // Columns along y: nx+1 of them, 2ny complex each, strided by nx+1, in place.
-  fftw_plan forward = fftw_plan_many_dft(1, &height, columns, c, nullptr, columns, 1, c,
-                                         nullptr, columns, 1, FFTW_FORWARD, flags);
-  fftw_plan backward = fftw_plan_many_dft(1, &height, columns, c, nullptr, columns, 1, c,
-                                          nullptr, columns, 1, FFTW_BACKWARD, flags);
+  fftw_plan forward = fft_planner::plan(flags, [&](unsigned f) {
+    return fftw_plan_many_dft(1, &height, columns, c, nullptr, columns, 1, c, nullptr, columns, 1,
+                              FFTW_FORWARD, f);
+  });
+  fftw_plan backward = fft_planner::plan(flags, [&](unsigned f) {
+    return fftw_plan_many_dft(1, &height, columns, c, nullptr, columns, 1, c, nullptr, columns, 1,
+                              FFTW_BACKWARD, f);
+  });
   if (r2c == nullptr || c2r == nullptr || forward == nullptr || backward == nullptr) {
     destroy(r2c);
     destroy(c2r);
@@ -173,10 +184,13 @@ HalfComplexFft::HalfComplexFft(std::int64_t nx, std::int64_t ny, FftPlanning pla
   std::lock_guard<std::mutex> lock(fft_planner::mutex());
   const fft_planner::PlannerThreads planner_threads(threads, nx * ny);
   const fft_planner::PlanningTimeLimit time_limit(planning);
-  fftw_plan r2hc =
-      fftw_plan_r2r(rank, dims, in.data(), out.data(), forward_kinds, fft_planner::flags_of(planning));
-  fftw_plan hc2r = fftw_plan_r2r(rank, dims, out.data(), in.data(), backward_kinds,
-                                 fft_planner::flags_of(planning) | FFTW_DESTROY_INPUT);
+  const unsigned flags = fft_planner::flags_of(planning);
+  fftw_plan r2hc = fft_planner::plan(flags, [&](unsigned f) {
+    return fftw_plan_r2r(rank, dims, in.data(), out.data(), forward_kinds, f);
+  });
+  fftw_plan hc2r = fft_planner::plan(flags | FFTW_DESTROY_INPUT, [&](unsigned f) {
+    return fftw_plan_r2r(rank, dims, out.data(), in.data(), backward_kinds, f);
+  });
   require_plans(r2hc, hc2r);
   r2hc_ = r2hc;
   hc2r_ = hc2r;

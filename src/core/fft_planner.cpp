@@ -25,6 +25,17 @@ unsigned flags_of(FftPlanning planning) {
   return FFTW_ESTIMATE;
 }
 
+namespace {
+PlanCounts counts;  // under the lock
+}  // namespace
+
+void count_plan(bool from_wisdom) { ++(from_wisdom ? counts.from_wisdom : counts.planned); }
+
+PlanCounts plan_counts() {
+  std::lock_guard<std::mutex> lock(mutex());
+  return counts;
+}
+
 PlanningTimeLimit::PlanningTimeLimit(FftPlanning planning) {
   if (planning == FftPlanning::measure) fftw_set_timelimit(measure_seconds);
   if (planning == FftPlanning::patient) fftw_set_timelimit(patient_seconds);
@@ -33,7 +44,7 @@ PlanningTimeLimit::PlanningTimeLimit(FftPlanning planning) {
 PlanningTimeLimit::~PlanningTimeLimit() { fftw_set_timelimit(FFTW_NO_TIMELIMIT); }
 
 bool threads_ready() {
-#ifdef ASPERITY_FFTW_THREADS
+#ifdef ASPERITY_THREADS
   static const bool ready = fftw_init_threads() != 0;
   return ready;
 #else
@@ -42,7 +53,7 @@ bool threads_ready() {
 }
 
 PlannerThreads::PlannerThreads(int threads, std::int64_t points) {
-#ifdef ASPERITY_FFTW_THREADS
+#ifdef ASPERITY_THREADS
   if (threads_ready()) {
     previous_ = fftw_planner_nthreads();
     fftw_plan_with_nthreads(threads > 1 && points >= loops::parallel_entries ? threads : 1);
@@ -54,7 +65,7 @@ PlannerThreads::PlannerThreads(int threads, std::int64_t points) {
 }
 
 PlannerThreads::~PlannerThreads() {
-#ifdef ASPERITY_FFTW_THREADS
+#ifdef ASPERITY_THREADS
   if (previous_ > 0) fftw_plan_with_nthreads(previous_);
 #endif
 }

@@ -4,6 +4,8 @@
 // serial transforms (core/fft_engine.cpp) and the distributed ones (core/mpi_partition.cpp).
 #pragma once
 
+#include <fftw3.h>
+
 #include <cstdint>
 #include <mutex>
 
@@ -18,6 +20,31 @@ std::mutex &mutex();
 
 // FFTW's planner flags for a planning choice.
 unsigned flags_of(FftPlanning planning);
+
+// How the plans of the serial transforms were made since the process started: from the
+// process's wisdom alone (no candidate timed: a shape planned before, or imported with
+// import_fft_wisdom), or by FFTW's planner (estimated, or measured candidates).
+struct PlanCounts {
+  std::int64_t from_wisdom = 0;
+  std::int64_t planned = 0;
+};
+PlanCounts plan_counts();  // takes the lock
+
+// The plan make(flags) returns, from wisdom alone when the process's wisdom holds the
+// transform for these flags, else planned with them; counted in plan_counts(). Call under the
+// lock. Estimated plans are planned as asked (they time nothing).
+void count_plan(bool from_wisdom);
+template <class Make>
+fftw_plan plan(unsigned flags, Make &&make) {
+  if ((flags & FFTW_ESTIMATE) == 0) {
+    if (fftw_plan known = make(flags | FFTW_WISDOM_ONLY)) {
+      count_plan(true);
+      return known;
+    }
+  }
+  count_plan(false);
+  return make(flags);
+}
 
 // The most time FFTW may spend planning one transform (fftw_set_timelimit), in seconds:
 // measured plans of a grid shape then cost at most a few seconds however busy the machine
@@ -44,7 +71,7 @@ class PlanningTimeLimit {
 bool threads_ready();
 
 // Plans made while it lives, of transforms of `points` points, run on `threads` threads
-// (FFTW's OpenMP threads, when the build has them), or on one below loops::parallel_entries
+// (FFTW's threads, when the build has them), or on one below loops::parallel_entries
 // points, where waking threads costs more than the work they would share. FFTW's thread count
 // for new plans is process-wide state: it is set under the lock and put back afterwards, so
 // that other FFTW users in the process keep theirs.

@@ -88,8 +88,7 @@ std::shared_ptr<Grid> Grid::create_distributed(std::shared_ptr<const Partition> 
                     "grid is one grid, created with the same sizes and box on every process");
   }
   const Slab slab = partition->slab(nx, ny);
-  const int threads = environment_threads();
-  grid->threads_ = threads > 0 ? threads : 1;
+  grid->threads_ = default_distributed_threads();
   grid->local_rows_ = slab.rows;
   grid->row_offset_ = slab.offset;
   grid->spectral_columns_ = slab.columns;

@@ -6,9 +6,11 @@
 // Reductions (the identity on one process).
 //
 // Threads: a loop of at least parallel_entries entries runs on loop_threads() threads (the
-// grid's count during a solve, core/threads.hpp). Reductions add up fixed chunks of
-// chunk_entries entries, each on its own, and then the chunks' results in chunk order,
-// whichever thread did which chunk: their results are the same bits for any thread count.
+// grid's count during a solve, core/threads.hpp), the library's own (core/thread_pool.hpp):
+// it is cut into jobs of chunk_entries entries, which the calling thread and the helpers that
+// get a core take one after another. Reductions add up each chunk on its own, and then the
+// chunks' results in chunk order, whichever thread did which chunk: their results are the
+// same bits for any thread count.
 #pragma once
 
 #include <algorithm>
@@ -18,11 +20,8 @@
 #include <utility>
 #include <vector>
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
-
 #include "core/reductions.hpp"
+#include "core/thread_pool.hpp"
 #include "core/threads.hpp"
 
 namespace asp {
@@ -38,20 +37,17 @@ inline int threads_for(std::int64_t n) {
   return threads > 1 && n >= parallel_entries ? threads : 1;
 }
 
-// body(begin, end) for the parts of [0, n), one per thread, contiguous.
+// body(begin, end) for consecutive pieces of [0, n), `piece` indices each (the last one
+// shorter), on up to `threads` threads, in no particular order.
 template <class Body>
-void in_parts(std::int64_t n, int threads, Body &&body) {
-#ifdef _OPENMP
-  if (threads > 1) {
-#pragma omp parallel num_threads(threads)
-    {
-      const std::int64_t part = omp_get_thread_num(), parts = omp_get_num_threads();
-      body(n * part / parts, n * (part + 1) / parts);
-    }
+void in_pieces(std::int64_t n, std::int64_t piece, int threads, Body &&body) {
+  const std::int64_t pieces = (n + piece - 1) / piece;
+  if (threads > 1 && pieces > 1) {
+    thread_pool::run_jobs(threads, pieces, [&](std::int64_t k) {
+      body(k * piece, std::min(n, (k + 1) * piece));
+    });
     return;
   }
-#endif
-  (void)threads;
   body(std::int64_t{0}, n);
 }
 
@@ -74,17 +70,11 @@ Partial reduce_in_chunks(std::int64_t n, std::int64_t chunk, int threads, const 
   auto one = [&](std::int64_t c) {
     reduce(c * chunk, std::min(n, (c + 1) * chunk), partials[static_cast<std::size_t>(c)]);
   };
-#ifdef _OPENMP
   if (threads > 1) {
-#pragma omp parallel for num_threads(threads) schedule(static)
-    for (std::int64_t c = 0; c < chunks; ++c) one(c);
+    thread_pool::run_jobs(threads, chunks, one);
   } else {
     for (std::int64_t c = 0; c < chunks; ++c) one(c);
   }
-#else
-  (void)threads;
-  for (std::int64_t c = 0; c < chunks; ++c) one(c);
-#endif
   Partial total = partials[0];
   for (std::int64_t c = 1; c < chunks; ++c) fold(total, partials[static_cast<std::size_t>(c)]);
   return total;
@@ -100,7 +90,7 @@ Partial reduce_in_parts(std::int64_t n, const Partial &initial, Reduce &&reduce,
 // body(i) for i in [0, n).
 template <class Body>
 void for_each(std::int64_t n, Body &&body) {
-  in_parts(n, threads_for(n), [&](std::int64_t begin, std::int64_t end) {
+  in_pieces(n, chunk_entries, threads_for(n), [&](std::int64_t begin, std::int64_t end) {
 #pragma omp simd
     for (std::int64_t i = begin; i < end; ++i) body(i);
   });

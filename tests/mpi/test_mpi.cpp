@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -384,10 +385,29 @@ void bad_input_on_one_process_fails_on_all() {
 
 }  // namespace
 
+// A distributed grid's default thread count is `expected` on every process (the tests
+// mpi.default_threads* run the program with --default-threads N under various environments).
+int default_threads_are(int expected) {
+  asp_grid *grid = nullptr;
+  require_ok(asp_grid_create_mpi(MPI_COMM_WORLD, 32, 32, 1.0, 1.0, &grid), "asp_grid_create_mpi");
+  int threads = 0;
+  require_ok(asp_grid_get_threads(grid, &threads), "asp_grid_get_threads");
+  if (threads != expected)
+    fail("the default thread count of a distributed grid is " + std::to_string(threads) +
+         ", not " + std::to_string(expected));
+  asp_grid_destroy(grid);
+  return failures;
+}
+
 int main(int argc, char **argv) {
   MPI_Init(&argc, &argv);
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  if (argc == 3 && std::strcmp(argv[1], "--default-threads") == 0) {
+    const int failed = default_threads_are(std::atoi(argv[2]));
+    MPI_Finalize();
+    return failed == 0 ? 0 : 1;
+  }
 
   slabs_cover_the_grid(64, 64);
   slabs_cover_the_grid(45, 37);
