@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "contact.hpp"
 #include "scene.hpp"
 
 namespace cli {
@@ -24,6 +25,8 @@ class Arguments {
   bool is_flag(const char *name);  // an option without a value (refuses --name=VALUE)
   // The value of the option matched by is(): after '=' or the next argument.
   std::string value();
+  // The value as a whole number >= 1 (refused otherwise).
+  int count();
   bool positional() const;  // does not start with '-' (or is "-")
   [[noreturn]] void refuse(const std::string &problem) const;
 
@@ -31,6 +34,11 @@ class Arguments {
   // --tolerance T, --option NAME=VALUE, --output DIR, --no-plots. True if the current
   // argument was one of them (and adds its override).
   bool scene_option(std::vector<Override> &overrides);
+
+  // The computing options shared by run, compare, sweep and info: --threads N,
+  // --planning estimate|measure|patient, --wisdom PATH, --no-wisdom. True if the current
+  // argument was one of them (and sets it).
+  bool compute_option(ComputeOptions &compute);
 
  private:
   std::vector<std::string> arguments_;
@@ -40,22 +48,28 @@ class Arguments {
   std::string matched_;  // the option name is() matched
   std::string inline_value_;
   bool has_inline_value_ = false;
+  bool value_is_next_ = false;  // value() took the next argument: it is current()
 };
 
 // The help text of the scene overrides, for each command's --help.
 extern const char *const scene_options_help;
 
-// What run, compare and sweep share on their command lines: the scene's overrides and one
-// SCENE (empty: the built-in scene).
+// The help text of the computing options; `planning` is the command's default planning and
+// why, as shown after "default: ".
+std::string compute_options_help(const char *planning);
+
+// What run, compare and sweep share on their command lines: the scene's overrides, the
+// computing options and one SCENE (empty: the built-in scene).
 struct SceneArguments {
   std::vector<Override> overrides;
+  ComputeOptions compute;
   std::string scene_path;
 };
 
-// Reads a scene command's arguments: --help (prints help, the scene overrides' help and the
-// exit statuses, and returns false), the scene overrides, one SCENE, and the command's own
-// options through `own`, which returns true when it took the current argument. Anything else
-// is refused.
+// Reads a scene command's arguments: --help (prints help, the scene overrides' and computing
+// options' help and the exit statuses, and returns false), the scene overrides, the
+// computing options, one SCENE, and the command's own options through `own`, which returns
+// true when it took the current argument. Anything else is refused.
 bool read_scene_arguments(Arguments &args, const char *help, SceneArguments &out,
                           const std::function<bool(Arguments &)> &own);
 

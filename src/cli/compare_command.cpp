@@ -13,6 +13,7 @@
 #include "outputs.hpp"
 #include "report.hpp"
 #include "solve.hpp"
+#include "wisdom.hpp"
 
 namespace cli {
 namespace {
@@ -29,17 +30,26 @@ const char *const compare_help =
     "the force balance (docs/algorithms.md): all are pressures relative to the same\n"
     "reference pressure, so their tolerances mean the same. Each solver runs one\n"
     "untimed iteration first, so that no time includes the FFT planning that the first\n"
-    "solve on a grid does. Writes to the output directory:\n"
-    "  compare.csv           one row per iteration of each solver: algorithm, iteration,\n"
-    "                        evaluations, transforms, seconds, error, objective,\n"
-    "                        contact_fraction\n"
-    "  compare_summary.csv   one row per solver\n"
+    "solve on a grid does, then solves from rest as many times as --repeats says. Its\n"
+    "time is the wall-clock time of the fastest of these solves, shown with the\n"
+    "processor time of that solve (summed over its threads, so above its time when\n"
+    "they worked in parallel) and the spread of the times (slowest less fastest). The\n"
+    "fastest solver is named unless the two fastest differ by less than the larger of\n"
+    "their spreads: that is noise of a busy machine, and no winner is named. Writes to\n"
+    "the output directory:\n"
+    "  compare.csv           one row per iteration of each solver's fastest solve:\n"
+    "                        algorithm, iteration, evaluations, transforms, seconds,\n"
+    "                        error, objective, contact_fraction\n"
+    "  compare_summary.csv   one row per solver, with its repeats, cpu_seconds and\n"
+    "                        seconds_spread\n"
     "  error_vs_time.png     error against wall-clock time, one line per solver\n"
     "  error_vs_iteration.png  error against iteration (when gnuplot is installed)\n"
     "\n"
     "Solvers:\n"
     "  --solvers A,B,...  these algorithms, in this order (compare.solvers); each must\n"
     "                     serve the scene\n"
+    "  --repeats K        solves of each solver, K >= 1 (default: 3 when its first\n"
+    "                     solve takes under 10 s, else 1)\n"
     "Options of one algorithm come from [compare.options.NAME] tables of the scene;\n"
     "the scene's [solver.options] apply to solver.algorithm; tolerance, max_iterations\n"
     "and stall_window of [solver] to every solver.\n"
@@ -83,12 +93,52 @@ void warm_up(asp_solver *solver, Contact &contact, int control, double value) {
   check(status, "the untimed first iteration");
 }
 
+// What a solver's timed solves gave: the report and pressure field of the fastest, how many
+// solves there were and the spread of their wall-clock times (slowest less fastest).
+struct Timing {
+  SolveReport report;
+  std::vector<double> pressure;
+  int repeats = 0;
+  double spread = 0.0;
+};
+
+// The solver's timed solves, each from rest: `repeats` of them, or when that is 0, three
+// when the first took under 10 s and one otherwise. A cancelled solve ends them; it is the
+// result only when it was the first.
+Timing timed_solves(Entry &e, Contact &contact, int control, double value, int repeats,
+                    ProgressLine &progress, const std::string &where) {
+  Timing t;
+  double slowest = 0.0;
+  for (int k = 0; k == 0 || k < repeats; ++k) {
+    check(asp_system_reset(contact.system.get()), "resetting the system");
+    SolveReport r = solve(e.solver.get(), e.algorithm, contact, control, value, progress, true,
+                          where);
+    if (repeats == 0) repeats = r.seconds < 10.0 ? 3 : 1;
+    const bool cancelled = r.termination == ASP_TERMINATION_CANCELLED;
+    if (cancelled && k > 0) break;
+    ++t.repeats;
+    slowest = std::max(slowest, r.seconds);
+    if (k == 0 || r.seconds < t.report.seconds) {
+      t.pressure = read_field(contact, ASP_FIELD_PRESSURE);
+      t.report = std::move(r);
+    }
+    if (cancelled) break;
+  }
+  t.spread = slowest - t.report.seconds;
+  return t;
+}
+
 }  // namespace
 
 int compare_command(const std::vector<std::string> &arguments) {
   Arguments args(arguments, "asperity compare");
   SceneArguments a;
+  int repeats = 0;  // 0: by the first solve's time
   const bool proceed = read_scene_arguments(args, compare_help, a, [&](Arguments &args) {
+    if (args.is("--repeats")) {
+      repeats = args.count();
+      return true;
+    }
     if (!args.is("--solvers")) return false;
     const std::string v = args.value();
     std::string array = "[";
@@ -101,7 +151,7 @@ int compare_command(const std::vector<std::string> &arguments) {
   const std::vector<Override> &overrides = a.overrides;
   const std::string &scene_path = a.scene_path;
 
-  Session session = open_session(scene_path, overrides, false);
+  Session session = open_session(scene_path, overrides, a.compute, false);
   const Scene &scene = session.scene;
   Contact &contact = session.contact;
   const int control = scene.control.control;
@@ -154,41 +204,43 @@ int compare_command(const std::vector<std::string> &arguments) {
   std::printf("control           %s %g (%s)\n", control_name(control), scene.control.value,
               control_unit(control, contact.surface).c_str());
   for (const std::string &s : skipped) std::printf("skipped           %s\n", s.c_str());
-  std::printf("\n%-20s %-16s %10s %10s %10s %11s %14s %14s %9s %10s\n", "algorithm",
-              "termination", "iterations", "time [s]", "error", "transforms", "mean pressure",
-              "penetration", "contact", "vs first");
+  std::printf("\n%-20s %-16s %10s %10s %10s %10s %7s %10s %11s %14s %14s %9s %10s\n",
+              "algorithm", "termination", "iterations", "time [s]", "cpu [s]", "spread [s]",
+              "repeats", "error", "transforms", "mean pressure", "penetration", "contact",
+              "vs first");
   std::fflush(stdout);
 
   InterruptGuard interrupts;
   ProgressLine progress(stderr);
-  std::vector<SolveReport> reports;
+  std::vector<Timing> timings;
   std::vector<double> reference;
   std::string reference_name;
   for (Entry &e : entries) {
     if (InterruptGuard::interrupted()) break;
     warm_up(e.solver.get(), contact, control, scene.control.value);
-    check(asp_system_reset(contact.system.get()), "resetting the system");
     progress.set_label(e.algorithm);
-    SolveReport r = solve(e.solver.get(), e.algorithm, contact, control, scene.control.value,
-                          progress, true, scene.source + ": compare.solvers: " + e.algorithm);
-    const std::vector<double> pressure = read_field(contact, ASP_FIELD_PRESSURE);
+    Timing t = timed_solves(e, contact, control, scene.control.value, repeats, progress,
+                            scene.source + ": compare.solvers: " + e.algorithm);
+    const SolveReport &r = t.report;
     std::string versus = "-";
     if (!reference.empty()) {
       char text[32];
-      std::snprintf(text, sizeof text, "%.2e", relative_difference(pressure, reference));
+      std::snprintf(text, sizeof text, "%.2e", relative_difference(t.pressure, reference));
       versus = text;
     } else if (r.converged()) {
-      reference = pressure;
+      reference = std::move(t.pressure);
       reference_name = e.algorithm;
       versus = "reference";
     }
-    std::printf("%-20s %-16s %10lld %10.3f %10.2e %11lld %14.6g %14.6g %9.5f %10s\n",
+    t.pressure = std::vector<double>();  // not needed any more
+    std::printf("%-20s %-16s %10lld %10.3f %10.3f %10.3f %7d %10.2e %11lld %14.6g %14.6g %9.5f "
+                "%10s\n",
                 e.algorithm.c_str(), termination_name(r.termination),
-                static_cast<long long>(r.iterations), r.seconds, r.error,
-                static_cast<long long>(r.transforms), r.mean_pressure, r.penetration,
-                r.contact_fraction, versus.c_str());
+                static_cast<long long>(r.iterations), r.seconds, r.cpu_seconds, t.spread,
+                t.repeats, r.error, static_cast<long long>(r.transforms), r.mean_pressure,
+                r.penetration, r.contact_fraction, versus.c_str());
     std::fflush(stdout);
-    reports.push_back(std::move(r));
+    timings.push_back(std::move(t));
   }
 
   // The files.
@@ -200,7 +252,8 @@ int compare_command(const std::vector<std::string> &arguments) {
   CsvTable summary({"algorithm", "termination", "iterations", "evaluations", "transforms",
                     column("seconds", "s"), "error", "tolerance", "contact_fraction",
                     column("mean_pressure", pressure_unit), column("penetration", s.unit),
-                    column("mean_gap", s.unit)});
+                    column("mean_gap", s.unit), "repeats", column("cpu_seconds", "s"),
+                    column("seconds_spread", "s")});
   LinePlot by_time, by_iteration;
   by_time.title = "error against time (" + scene.source + ")";
   by_time.x_label = "wall-clock time [s]";
@@ -208,8 +261,9 @@ int compare_command(const std::vector<std::string> &arguments) {
   by_iteration.x_label = "iteration";
   by_time.y_label = by_iteration.y_label = "error";
   by_time.log_y = by_iteration.log_y = true;
-  const SolveReport *fastest = nullptr;
-  for (const SolveReport &r : reports) {
+  std::vector<const Timing *> converged;  // fastest first
+  for (const Timing &t : timings) {
+    const SolveReport &r = t.report;
     for (size_t i = 0; i < r.history[0].size(); ++i) {
       std::vector<std::string> row = {r.algorithm};
       for (size_t c = 0; c < r.history.size(); ++c)
@@ -219,13 +273,17 @@ int compare_command(const std::vector<std::string> &arguments) {
     summary.add_row({r.algorithm, termination_name(r.termination), cell(r.iterations),
                      cell(r.evaluations), cell(r.transforms), cell(r.seconds), cell(r.error),
                      cell(r.tolerance), cell(r.contact_fraction), cell(r.mean_pressure),
-                     cell(r.penetration), cell(r.mean_gap)});
+                     cell(r.penetration), cell(r.mean_gap), cell(static_cast<int64_t>(t.repeats)),
+                     cell(r.cpu_seconds), cell(t.spread)});
     if (!r.history[4].empty())
       by_time.y_max = by_iteration.y_max = std::max(by_time.y_max, 100.0 * r.history[4][0]);
     by_time.series.push_back({r.algorithm, r.history[3], r.history[4]});
     by_iteration.series.push_back({r.algorithm, r.history[0], r.history[4]});
-    if (r.converged() && (fastest == nullptr || r.seconds < fastest->seconds)) fastest = &r;
+    if (r.converged()) converged.push_back(&t);
   }
+  std::stable_sort(converged.begin(), converged.end(), [](const Timing *a, const Timing *b) {
+    return a->report.seconds < b->report.seconds;
+  });
   const std::string &dir = session.directory;
   histories.write(dir + "/compare.csv");
   summary.write(dir + "/compare_summary.csv");
@@ -239,15 +297,28 @@ int compare_command(const std::vector<std::string> &arguments) {
     }
   }
   std::printf("\n");
-  if (fastest != nullptr)
-    std::printf("fastest           %s: converged in %.3f s\n", fastest->algorithm.c_str(),
-                fastest->seconds);
+  if (converged.size() >= 2 &&
+      converged[1]->report.seconds - converged[0]->report.seconds <
+          std::max(converged[0]->spread, converged[1]->spread)) {
+    const Timing &a = *converged[0], &b = *converged[1];
+    std::printf("fastest           no winner: %s (%.3f s) and %s (%.3f s) differ by less than "
+                "the spread of their repeats (%.3f s)\n",
+                a.report.algorithm.c_str(), a.report.seconds, b.report.algorithm.c_str(),
+                b.report.seconds, std::max(a.spread, b.spread));
+  } else if (!converged.empty()) {
+    const Timing &a = *converged[0];
+    std::printf("fastest           %s: converged in %.3f s", a.report.algorithm.c_str(),
+                a.report.seconds);
+    if (a.repeats > 1) std::printf(" (the fastest of %d solves)", a.repeats);
+    std::printf("\n");
+  }
   if (!reference_name.empty())
     std::printf("vs first          largest pressure difference from %s's, relative to its "
                 "largest pressure\n", reference_name.c_str());
   std::printf("outputs           %s/: %s\n", dir.c_str(), files.c_str());
-  bool all = reports.size() == entries.size();
-  for (const SolveReport &r : reports) all = all && r.converged();
+  write_wisdom(session.compute);
+  bool all = timings.size() == entries.size();
+  for (const Timing &t : timings) all = all && t.report.converged();
   return all ? exit_converged : exit_not_converged;
 }
 

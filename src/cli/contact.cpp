@@ -22,7 +22,7 @@ std::string with_unit(double value, const std::string &unit) {
 }
 
 // Generated surfaces: the scene's grid, heights from the library's generators.
-Surface generated_surface(const Scene &scene) {
+Surface generated_surface(const Scene &scene, const ComputeOptions &compute) {
   const GridSpec &g = scene.grid;
   const TopographySpec &t = scene.topography;
   Surface s;
@@ -33,7 +33,7 @@ Surface generated_surface(const Scene &scene) {
   s.ly = g.one_dimensional ? g.lx : g.ly;
   s.unit = g.unit;
   s.heights.assign(static_cast<size_t>(s.nx * s.ny), 0.0);
-  Grid grid = make_grid(s);
+  Grid grid = make_grid(s, compute);
   const int64_t n = s.nx * s.ny;
   const std::string where = scene.source + ": [topography]";
   std::ostringstream what;
@@ -197,19 +197,25 @@ const char *detrend_name(int mode) {
 
 }  // namespace
 
-Grid make_grid(const Surface &s) {
+Grid make_grid(const Surface &s, const ComputeOptions &compute) {
   asp_grid *grid = nullptr;
   const int status = s.one_dimensional ? asp_grid_create_1d(s.nx, s.lx, &grid)
                                        : asp_grid_create_2d(s.nx, s.ny, s.lx, s.ly, &grid);
   check_given(status, "the grid");
-  return Grid(grid);
+  Grid owned(grid);
+  // The plans are made at the first transform, with the threads and planning set by then.
+  if (compute.threads > 0)
+    check_given(asp_grid_set_threads(grid, compute.threads),
+                "--threads " + std::to_string(compute.threads));
+  check(asp_grid_set_fft_planning(grid, compute.planning), "setting the FFT planning");
+  return owned;
 }
 
-Surface make_surface(const Scene &scene) {
+Surface make_surface(const Scene &scene, const ComputeOptions &compute) {
   Surface s = scene.topography.kind == TopographyKind::file ? measured_surface(scene)
-                                                             : generated_surface(scene);
+                                                             : generated_surface(scene, compute);
   if (scene.topography.detrend != 0) {
-    Grid grid = make_grid(s);
+    Grid grid = make_grid(s, compute);
     check_given(asp_topography_detrend(grid.get(), scene.topography.detrend, s.heights.data(),
                                        static_cast<int64_t>(s.heights.size())),
                 scene.source + ": topography.detrend");
@@ -219,10 +225,10 @@ Surface make_surface(const Scene &scene) {
   return s;
 }
 
-Contact make_contact(const Scene &scene) {
+Contact make_contact(const Scene &scene, const ComputeOptions &compute) {
   Contact c;
-  c.surface = make_surface(scene);
-  c.grid = make_grid(c.surface);
+  c.surface = make_surface(scene, compute);
+  c.grid = make_grid(c.surface, compute);
   const SubstrateSpec &sub = scene.substrate;
   c.periodic = sub.periodic;
   if (c.surface.one_dimensional && !sub.periodic) {

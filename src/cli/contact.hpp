@@ -26,12 +26,23 @@ struct Surface {
   std::vector<std::string> notes;  // what was assumed or changed on the way (units, filling)
 };
 
-// The scene's grid, as the library makes it.
-Grid make_grid(const Surface &surface);
+// How every grid of a command computes, from its command line (--threads, --planning), and
+// the FFTW wisdom file it keeps between runs (--wisdom, --no-wisdom; wisdom.hpp reads and
+// writes it).
+struct ComputeOptions {
+  int threads = 0;                 // 0: the library's default
+  int planning = ASP_FFT_MEASURE;  // ASP_FFT_*
+  std::string wisdom;              // --wisdom PATH; "" for the default file
+  bool no_wisdom = false;          // --no-wisdom
+};
+
+// The scene's grid, as the library makes it, with the threads and FFT planning of `compute`
+// set before anything transforms on it.
+Grid make_grid(const Surface &surface, const ComputeOptions &compute);
 
 // The surface a scene describes: generated or read from its file, converted to the scene's
 // unit, missing points filled if the scene says so, detrended if it says so.
-Surface make_surface(const Scene &scene);
+Surface make_surface(const Scene &scene, const ComputeOptions &compute = {});
 
 struct Contact {
   Surface surface;
@@ -41,7 +52,7 @@ struct Contact {
 };
 
 // The grid and the system (substrate, topography, interaction) of a scene.
-Contact make_contact(const Scene &scene);
+Contact make_contact(const Scene &scene, const ComputeOptions &compute = {});
 
 // A solver of that algorithm with the settings applied in order. `where` names the place in
 // the scene the algorithm came from, for messages.

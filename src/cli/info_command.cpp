@@ -10,6 +10,7 @@
 #include "commands.hpp"
 #include "io/height_map.hpp"
 #include "outputs.hpp"
+#include "wisdom.hpp"
 
 namespace cli {
 namespace {
@@ -38,6 +39,11 @@ const char *const info_help =
     "For a scene file, --set KEY=VALUE overrides its keys as for 'asperity run'.\n"
     "\n";
 
+// info's default planning, and why.
+const char *const info_planning =
+    "estimate (info transforms a surface once or a few times: measuring the plans would "
+    "cost more than it saves)";
+
 bool ends_with(const std::string &text, const std::string &end) {
   return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
 }
@@ -59,6 +65,8 @@ int info_command(const std::vector<std::string> &arguments) {
   double pixel_size = 0.0;
   int64_t bins = 0;
   bool plots = true;
+  ComputeOptions compute;
+  compute.planning = ASP_FFT_ESTIMATE;
   auto number = [&](const std::string &text, bool whole) {
     char *end = nullptr;
     const double value = std::strtod(text.c_str(), &end);
@@ -69,7 +77,8 @@ int info_command(const std::vector<std::string> &arguments) {
   };
   while (args.next()) {
     if (args.is_flag("--help") || args.is_flag("-h")) {
-      std::printf("%s%s", info_help, exit_status_help);
+      std::printf("%s%s\n%s", info_help, compute_options_help(info_planning).c_str(),
+                  exit_status_help);
       return exit_converged;
     }
     if (args.is("--set")) {
@@ -99,6 +108,8 @@ int info_command(const std::vector<std::string> &arguments) {
       output = args.value();
     } else if (args.is_flag("--no-plots")) {
       plots = false;
+    } else if (args.compute_option(compute)) {
+      continue;
     } else if (args.positional() && path.empty()) {
       path = args.current();
     } else {
@@ -141,11 +152,12 @@ int info_command(const std::vector<std::string> &arguments) {
                 : detrend == "curvature" ? ASP_DETREND_CURVATURE
                                          : 0;
   }
-  const Surface s = make_surface(scene);
+  read_wisdom(compute);
+  const Surface s = make_surface(scene, compute);
   const std::string directory =
       prepare_directory(output.empty() ? stem(path) + "-info" : output, "--output");
 
-  Grid grid = make_grid(s);
+  Grid grid = make_grid(s, compute);
   const int64_t n = static_cast<int64_t>(s.heights.size());
   double rms_height = 0.0, rms_slope = 0.0, rms_curvature = 0.0;
   check(asp_topography_statistics(grid.get(), s.heights.data(), n, &rms_height, &rms_slope,
@@ -196,6 +208,7 @@ int info_command(const std::vector<std::string> &arguments) {
     else std::fprintf(stderr, "asperity: note: %s\n", note.c_str());
   }
   std::printf("outputs           %s/: %s\n", directory.c_str(), files.c_str());
+  write_wisdom(compute);
   return exit_converged;
 }
 

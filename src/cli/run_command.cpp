@@ -7,6 +7,7 @@
 #include "outputs.hpp"
 #include "report.hpp"
 #include "solve.hpp"
+#include "wisdom.hpp"
 
 namespace cli {
 namespace {
@@ -57,7 +58,7 @@ int run_command(const std::vector<std::string> &arguments) {
   const std::string &scene_path = a.scene_path;
 
   if (check_only) {
-    Session session = open_session(scene_path, overrides, false);
+    Session session = open_session(scene_path, overrides, a.compute, false);
     Solver solver = make_solver(session.scene.solver.algorithm, session.scene.solver.where,
                                 session.scene.solver.options);
     const std::string refused = refusal(solver.get(), session.contact,
@@ -67,7 +68,7 @@ int run_command(const std::vector<std::string> &arguments) {
     std::printf("solver            %s serves the scene\n", session.scene.solver.algorithm.c_str());
     return exit_converged;
   }
-  Session session = open_session(scene_path, overrides, true);
+  Session session = open_session(scene_path, overrides, a.compute, true);
   if (session.scene.control.has_sweep) return run_sweep(session);
 
   const Scene &scene = session.scene;
@@ -84,6 +85,7 @@ int run_command(const std::vector<std::string> &arguments) {
       solve(session.solver.get(), scene.solver.algorithm, contact, scene.control.control,
             scene.control.value, progress, scene.output.history, scene.solver.where);
   print_solve(stdout, report, contact.surface);
+  write_wisdom(session.compute);
 
   // The files.
   const std::string &dir = session.directory;

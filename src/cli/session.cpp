@@ -2,6 +2,7 @@
 #include "session.hpp"
 
 #include "outputs.hpp"
+#include "wisdom.hpp"
 
 namespace cli {
 
@@ -18,10 +19,12 @@ std::string refusal(asp_solver *solver, const Contact &contact, int control) {
 }
 
 Session open_session(const std::string &scene_path, const std::vector<Override> &overrides,
-                     bool with_solver) {
+                     const ComputeOptions &compute, bool with_solver) {
   Session s;
   s.scene = read_scene(scene_path, overrides);
-  s.contact = make_contact(s.scene);
+  s.compute = compute;
+  read_wisdom(compute);
+  s.contact = make_contact(s.scene, compute);
   if (with_solver) {
     s.solver = make_solver(s.scene.solver.algorithm, s.scene.solver.where, s.scene.solver.options);
     const std::string refused = refusal(s.solver.get(), s.contact, s.scene.control.control);

@@ -15,6 +15,7 @@ namespace cli {
 
 struct Session {
   Scene scene;
+  ComputeOptions compute;  // the command line's threads, FFT planning and wisdom file
   Contact contact;
   Solver solver;          // the scene's solver (null when not asked for)
   std::string directory;  // the output directory, made
@@ -25,9 +26,10 @@ struct Session {
 Scene read_scene(const std::string &scene_path, const std::vector<Override> &overrides);
 
 // with_solver: make the scene's solver and check that it serves the scene's control. The
-// output directory is made last (make_directory; compare calls it after checking its solvers).
+// FFTW wisdom file is read once the scene is, before the first grid. The output directory is
+// made last (make_directory; compare calls it after checking its solvers).
 Session open_session(const std::string &scene_path, const std::vector<Override> &overrides,
-                     bool with_solver);
+                     const ComputeOptions &compute, bool with_solver);
 
 // Makes the scene's output directory and sets session.directory.
 void make_directory(Session &session);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "solve.hpp"
 
+#include <time.h>
+
 #include <cmath>
 
 namespace cli {
@@ -14,6 +16,13 @@ const std::vector<HistoryColumn> history_columns = {
 bool SolveReport::converged() const { return termination == ASP_TERMINATION_CONVERGED; }
 
 namespace {
+
+// The processor time of the whole process so far (every thread's, the library's included).
+double process_cpu_seconds() {
+  timespec t{};
+  if (clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t) != 0) return 0.0;
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
 
 void require_finite(double value, const char *name, const SolveReport &r) {
   if (!std::isfinite(value))
@@ -32,13 +41,16 @@ SolveReport solve(asp_solver *solver, const std::string &algorithm, Contact &con
   check(asp_solver_set_history(solver, record_history ? 1 : 0), "turning the history on");
   check(asp_solver_set_progress(solver, ProgressLine::callback, &progress),
         "setting the progress callback");
+  const double cpu_start = process_cpu_seconds();
   const int status = asp_solver_solve(solver, system, control, value);
+  const double cpu_seconds = process_cpu_seconds() - cpu_start;
   progress.clear();
   asp_solver_set_progress(solver, nullptr, nullptr);
   check_given(status, where);
 
   SolveReport r;
   r.algorithm = algorithm;
+  r.cpu_seconds = cpu_seconds;
   check(asp_solver_termination(solver, &r.termination), "reading the report");
   check(asp_solver_iterations(solver, &r.iterations), "reading the report");
   check(asp_solver_evaluations(solver, &r.evaluations), "reading the report");

@@ -24,7 +24,8 @@ struct SolveReport {
   int64_t iterations = 0;
   int64_t evaluations = 0;
   int64_t transforms = 0;
-  double seconds = 0.0;
+  double seconds = 0.0;      // wall-clock time, as the library measured it
+  double cpu_seconds = 0.0;  // the process's processor time during the solve, all threads
   double error = 0.0;
   double tolerance = 0.0;
   // The contact after the solve.

@@ -9,6 +9,7 @@
 #include "outputs.hpp"
 #include "report.hpp"
 #include "solve.hpp"
+#include "wisdom.hpp"
 
 namespace cli {
 namespace {
@@ -91,6 +92,7 @@ int run_sweep(Session &session) {
       break;
     }
   }
+  write_wisdom(session.compute);
   // The unloading line starts where loading turned.
   if (!down.x.empty()) {
     down.x.insert(down.x.begin(), up.x.back());
@@ -151,7 +153,7 @@ int sweep_command(const std::vector<std::string> &arguments) {
     throw usage_error(scene.source +
                       ": control: a sweep needs control.sweep in the scene, or --from, --to and "
                       "--steps");
-  Session session = open_session(scene_path, overrides, true);
+  Session session = open_session(scene_path, overrides, a.compute, true);
   return run_sweep(session);
 }
 

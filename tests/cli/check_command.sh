@@ -13,6 +13,9 @@
 #   - sweep: a small Table 5 sweep whose unloading branch lies below the loading one;
 #   - info and measured scenes: files written by NumPy (.npy and savetxt text), an .x3p, and a
 #     field written by run read back; units and missing points;
+#   - threads and FFT planning: bad values refused by every command; the FFTW wisdom file
+#     written to the cache directory and read back, a damaged or foreign one or one that is
+#     not a regular file passed over with a note (same results), --no-wisdom and --wisdom;
 #   - the progress line only on a terminal; Ctrl-C cancels cleanly.
 # Usage: check_command.sh PATH_TO_ASPERITY SOURCE_DIRECTORY WORK_DIRECTORY
 set -u
@@ -20,6 +23,8 @@ cli=$1 source=$2 work=$3
 scenes=$source/tests/cli/scenes data=$source/tests/io/data
 rm -rf "$work" && mkdir -p "$work" || exit 1
 cd "$work" || exit 1
+# The command keeps FFTW wisdom in the user's cache directory: here, one of the test's own.
+export XDG_CACHE_HOME=$work/cache
 out=$work/stdout err=$work/stderr
 small=$scenes/small.toml
 
@@ -86,6 +91,15 @@ bad "--set" "expected KEY=VALUE" run "$small" --set grid.nx
 bad "--algorithm nosuch" "unknown algorithm|known" run "$small" --algorithm nosuch
 bad "--option frob=1" "frob" run "$small" --option frob=1
 bad "--option max_iterations=0" "max_iterations" run "$small" --option max_iterations=0
+for command in run compare sweep info; do
+  for threads in 0 -1 abc 1.5; do
+    bad "--threads" "expected a whole number >= 1" $command "$small" --threads "$threads"
+  done
+  bad "--planning foo" "expected estimate, measure or patient" $command "$small" --planning foo
+  bad "--wisdom" "needs a value" $command "$small" --wisdom
+done
+bad "--repeats 0" "expected a whole number >= 1" compare "$small" --repeats 0
+bad "--repeats=two" "expected a whole number >= 1" compare "$small" --repeats=two
 
 # ---- bad scenes: the file, line and key, and what is wrong ----------------------------------
 bad "no-such-scene.toml" "cannot open the scene file" run no-such-scene.toml
@@ -243,7 +257,8 @@ run compare "$small" --solvers pk,bugnicourt --output compared
 expect "comparing pk and bugnicourt exits 0 (stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
 expect "the comparison lists pk" has "^pk +converged" "$out"
 expect "the comparison lists bugnicourt" has "^bugnicourt +converged" "$out"
-expect "the comparison names the fastest" has "^fastest +(pk|bugnicourt)" "$out"
+expect "the comparison names the fastest, or none within the spread of their repeats" \
+  has "^fastest +(pk|bugnicourt|no winner: .* differ by less than the spread)" "$out"
 expect "compare.csv has its header" [ "$(header_of compared/compare.csv)" = \
   "algorithm,iteration,evaluations,transforms,seconds [s],error,objective,contact_fraction" ]
 expect "compare.csv has rows of both solvers" \
@@ -251,6 +266,15 @@ expect "compare.csv has rows of both solvers" \
 expect "compare_summary.csv has one row per solver" [ "$(wc -l < compared/compare_summary.csv)" -eq 3 ]
 expect "the two solvers agree on the pressure field to 1e-5" awk '
   $1 == "bugnicourt" { exit ($NF + 0 < 1e-5) ? 0 : 1 }' "$out"
+run compare "$small" --solvers pk,bugnicourt --repeats 2 --output repeated
+expect "compare --repeats 2 exits 0 (stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
+expect "compare_summary.csv ends with the repeats, CPU time and spread" bash -c \
+  'head -n 1 "$1" | grep -q ",mean_gap \[um\],repeats,cpu_seconds \[s\],seconds_spread \[s\]$"' \
+  _ repeated/compare_summary.csv
+expect "each solver ran twice, with a CPU time and a spread >= 0" awk -F, '
+  NR > 1 { if ($13 != 2 || !($14 > 0) || !($15 >= 0)) exit 1; rows++ }
+  END { exit rows == 2 ? 0 : 1 }' repeated/compare_summary.csv
+expect "the table shows the repeats" awk '$1 == "pk" && $7 == 2 { found = 1 } END { exit !found }' "$out"
 if [ "$have_gnuplot" = yes ]; then
   expect "error_vs_time.png is a PNG file" is_png compared/error_vs_time.png
   expect "error_vs_iteration.png is a PNG file" is_png compared/error_vs_iteration.png
@@ -279,6 +303,75 @@ run sweep "$small" --quantity penetration --from 0 --to 0.002 --steps 2 --no-unl
 expect "a sweep from options exits 0 (stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
 expect "a sweep from options has 3 steps" [ "$(wc -l < swept-options/sweep.csv)" -eq 4 ]
 bad "control" "a sweep needs control.sweep" sweep "$small"
+
+# ---- threads, FFT planning and wisdom -------------------------------------------------------
+run run "$small" --threads 1 --planning estimate --output one-thread
+expect "run --threads 1 --planning estimate exits 0 (stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
+run compare "$small" --solvers pk --threads 1 --planning patient --repeats 1 --output one-thread-compare
+expect "compare --threads 1 --planning patient exits 0 (stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
+run sweep "$small" --quantity penetration --from 0 --to 0.002 --steps 1 --algorithm lbfgsb \
+  --threads 1 --planning estimate --output one-thread-sweep
+expect "sweep --threads 1 --planning estimate exits 0 (stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
+run info "$small" --threads 1 --planning measure --output one-thread-info
+expect "info --threads 1 --planning measure exits 0 (stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
+
+# The summary without its time: what two runs that plan alike must agree on to the bit.
+results() { grep -v '^seconds,' "$1/summary.csv"; }
+starts_as_wisdom() { [ "$(head -c 6 "$1")" = "(fftw-" ]; }
+fresh=$work/fresh-cache wisdom=$work/fresh-cache/asperity/fftw-wisdom
+XDG_CACHE_HOME=$fresh run run "$small" --output wisdom-first
+expect "a first run with an empty cache exits 0 without a note (stderr: $(cat "$err"))" \
+  bash -c '[ "$1" -eq 0 ] && [ ! -s "$2" ]' _ "$rc" "$err"
+expect "a run writes the wisdom file in \$XDG_CACHE_HOME/asperity" starts_as_wisdom "$wisdom"
+expect "the directories it makes are the user's only" \
+  [ "$(stat -c %a "$fresh")$(stat -c %a "$fresh/asperity")" = 700700 ]
+expect "no temporary file is left beside it" [ "$(ls -A "$fresh/asperity")" = fftw-wisdom ]
+XDG_CACHE_HOME=$fresh run run "$small" --output wisdom-second
+expect "a second run reads it without a note (exit $rc; stderr: $(cat "$err"))" \
+  bash -c '[ "$1" -eq 0 ] && [ ! -s "$2" ]' _ "$rc" "$err"
+
+XDG_CACHE_HOME=$fresh run run "$small" --planning estimate --no-wisdom --output no-wisdom
+for damage in foreign random; do
+  if [ $damage = foreign ]; then
+    printf '(fftw-3.3.10 fftw_wisdom #x12 garbage' > "$wisdom"
+  else
+    head -c 4096 /dev/urandom > "$wisdom"
+  fi
+  XDG_CACHE_HOME=$fresh run run "$small" --planning estimate --output "damaged-$damage"
+  expect "a $damage wisdom file does not stop the run (exit $rc)" [ "$rc" -eq 0 ]
+  expect "a $damage wisdom file gets one note" \
+    bash -c '[ "$(grep -c "note: FFTW wisdom .* ignored: " "$1")" -eq 1 ]' _ "$err"
+  expect "a $damage wisdom file leaves the results as without wisdom" \
+    cmp -s <(results "damaged-$damage") <(results no-wisdom)
+done
+XDG_CACHE_HOME=$fresh run run "$small" --output damaged-replaced
+expect "a measuring run replaces a damaged wisdom file (exit $rc)" starts_as_wisdom "$wisdom"
+run run "$small" --wisdom /dev/null --output wisdom-device
+expect "--wisdom /dev/null (not a regular file) does not stop the run (exit $rc)" [ "$rc" -eq 0 ]
+expect "--wisdom /dev/null gets a note" has "note: FFTW wisdom /dev/null ignored: " "$err"
+expect "--wisdom /dev/null is left alone" [ -c /dev/null ]
+
+mkdir -p empty-cache
+XDG_CACHE_HOME=$work/empty-cache run run "$small" --no-wisdom --output no-wisdom-run
+expect "--no-wisdom exits 0 without a note" bash -c '[ "$1" -eq 0 ] && [ ! -s "$2" ]' _ "$rc" "$err"
+expect "--no-wisdom writes nothing in the cache" [ -z "$(ls -A empty-cache)" ]
+run run "$small" --wisdom "$work/chosen/wisdom" --output chosen-wisdom
+expect "--wisdom PATH that does not exist yet is a note (exit $rc)" \
+  bash -c '[ "$1" -eq 0 ] && grep -q "note: FFTW wisdom .*chosen/wisdom does not exist" "$2"' _ "$rc" "$err"
+expect "--wisdom PATH writes PATH" starts_as_wisdom "$work/chosen/wisdom"
+XDG_CACHE_HOME=$work/info-cache run info "$small" --output info-wisdom
+expect "info plans at once by default and writes no wisdom" [ ! -e "$work/info-cache" ]
+env -u XDG_CACHE_HOME HOME="$work/home" "$cli" run "$small" --output home-wisdom > "$out" 2> "$err" < /dev/null
+expect "without XDG_CACHE_HOME the wisdom goes to \$HOME/.cache/asperity" \
+  starts_as_wisdom "$work/home/.cache/asperity/fftw-wisdom"
+XDG_CACHE_HOME=relative HOME="$work/home2" run run "$small" --output relative-wisdom
+expect "a relative XDG_CACHE_HOME is passed over for \$HOME/.cache" \
+  starts_as_wisdom "$work/home2/.cache/asperity/fftw-wisdom"
+expect "a relative XDG_CACHE_HOME is not written" [ ! -e relative ]
+env -u XDG_CACHE_HOME -u HOME "$cli" run "$small" --output homeless > "$out" 2> "$err" < /dev/null
+rc=$?
+expect "without HOME or XDG_CACHE_HOME a run exits 0 without wisdom or a note (exit $rc)" \
+  bash -c '[ "$1" -eq 0 ] && [ ! -s "$2" ]' _ "$rc" "$err"
 
 # ---- measured surfaces and info -------------------------------------------------------------
 # Files written by NumPy: .npy in C and Fortran order, float32; text from numpy.savetxt.
