@@ -12,6 +12,8 @@
 #include <thread>
 #include <vector>
 
+#include <pthread.h>
+
 namespace asp {
 namespace thread_pool {
 namespace {
@@ -27,6 +29,10 @@ constexpr auto spin_time = std::chrono::microseconds(50);
 
 // The most helpers the pool starts, whatever a grid asks for.
 constexpr int most_helpers = 255;
+
+// True in a child process forked after the pool started: the child has none of its helpers,
+// and a lock a helper held at the fork stays taken there, so its loops run on its one thread.
+std::atomic<bool> forked{false};
 
 // True on the pool's helpers, and on a caller while it runs jobs: a loop started there runs
 // on its thread alone.
@@ -102,6 +108,15 @@ class Pool {
     return pool;
   }
 
+  // A child process forked after the pool started uses no helper. Its copies of the helpers'
+  // handles name threads it does not have: they are set aside, never joined.
+  static void after_fork_in_child() {
+    forked.store(true);
+    Pool &pool = instance();
+    new std::vector<std::thread>(std::move(pool.helpers_));
+    pool.helpers_.clear();
+  }
+
   ~Pool() {
     {
       std::lock_guard<std::mutex> lock(mutex_);
@@ -118,7 +133,8 @@ class Pool {
     // after this call has returned.
     const auto loop = std::make_shared<Loop>(job, context, jobs);
     std::unique_lock<std::mutex> busy(busy_, std::defer_lock);
-    const int helpers = wanted > 0 && !inside_job && busy.try_lock() ? start_helpers(wanted) : 0;
+    const int helpers =
+        wanted > 0 && !inside_job && !forked.load() && busy.try_lock() ? start_helpers(wanted) : 0;
     if (helpers > 0) offer(loop, helpers);
     {
       const InsideJob mark;
@@ -137,7 +153,7 @@ class Pool {
   }
 
  private:
-  Pool() = default;
+  Pool() { pthread_atfork(nullptr, nullptr, &Pool::after_fork_in_child); }
 
   // Starts helpers until there are `wanted` (called by the one caller that holds busy_).
   // Returns how many there are: fewer when the system refuses a thread.

@@ -80,7 +80,7 @@ static const int statuses[] = {ASP_OK,
                                ASP_ERR_IO};
 
 /* Values that belong to no family, inside and outside the families' ranges. */
-static const int strays[] = {INT_MIN, -701, -1, 0, 1, 2, 99, 100, 103, 199, 200,
+static const int strays[] = {INT_MIN, -701, -1, 0, 1, 2, 99, 100, 104, 199, 200,
                              203, 300, 316, 399, 400, 405, 500, 504, 600, 608,
                              700, 706, 800, 1000, INT_MAX};
 #define N_STRAYS ((int)(sizeof strays / sizeof strays[0]))

@@ -8,9 +8,13 @@
 
 #include <atomic>
 #include <cstdint>
+#include <cstdlib>
 #include <stdexcept>
 #include <thread>
 #include <vector>
+
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "core/loops.hpp"
 #include "core/thread_pool.hpp"
@@ -76,6 +80,21 @@ TEST(ThreadPool, LoopsFromSeveralThreadsAtOnceAndFromInsideAJobAllRun) {
     });
   for (auto &t : threads) t.join();
   for (const std::int64_t s : sums) EXPECT_EQ(s, 20 * 6 * (jobs * (jobs - 1) / 2));
+}
+
+TEST(ThreadPool, AChildForkedAfterThePoolStartedRunsItsLoopsAndExits) {
+  times_each_job_ran(4, 100);  // the helpers exist
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    std::vector<int> ran = times_each_job_ran(4, 100);
+    int wrong = 0;
+    for (const int r : ran) wrong += r != 1;
+    std::exit(wrong == 0 ? 0 : 1);  // runs the pool's destructor in the child
+  }
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "status " << status;
 }
 
 TEST(ThreadPool, LoopHelpersGiveTheSameBitsOnAnyThreadCount) {
