@@ -103,9 +103,13 @@ struct Loop {
 
 class Pool {
  public:
+  // Made on first use and never destroyed: a child forked while helpers waited holds copies
+  // of their condition variables that can never be destroyed there. The helpers of the
+  // process itself are stopped and joined at its exit (Stopper).
   static Pool &instance() {
-    static Pool pool;
-    return pool;
+    static Pool *const pool = new Pool;
+    static const Stopper stopper(pool);
+    return *pool;
   }
 
   // A child process forked after the pool started uses no helper. Its copies of the helpers'
@@ -117,14 +121,25 @@ class Pool {
     pool.helpers_.clear();
   }
 
-  ~Pool() {
+  // Stops and joins the helpers at the process's exit (or when the library is unloaded), in
+  // the process that started them only: a forked child has none, and a lock a helper held
+  // at the fork is held there for ever.
+  void stop() {
+    if (forked.load()) return;
     {
       std::lock_guard<std::mutex> lock(mutex_);
       stopping_ = true;
     }
     wake_.notify_all();
     for (std::thread &helper : helpers_) helper.join();
+    helpers_.clear();
   }
+
+  struct Stopper {
+    explicit Stopper(Pool *p) : pool(p) {}
+    ~Stopper() { pool->stop(); }
+    Pool *pool;
+  };
 
   void run(int threads, std::int64_t jobs, Job job, void *context) {
     const int wanted = static_cast<int>(
@@ -159,6 +174,7 @@ class Pool {
   // Returns how many there are: fewer when the system refuses a thread.
   int start_helpers(int wanted) {
     std::lock_guard<std::mutex> lock(mutex_);
+    if (stopping_) return 0;  // loops of other objects' destructors at exit run alone
     try {
       while (static_cast<int>(helpers_.size()) < wanted)
         helpers_.emplace_back([this] { helper_main(); });
