@@ -24,8 +24,10 @@
 // Under a load of L processes per core, L x (cores online) processes spin on arithmetic
 // beside the measurements (each ends by itself after 30 minutes at the latest, or when this
 // program ends). Each setting is measured R times, the default and one thread in turn so
-// that a drift of the load touches both alike, and the least time kept. Progress goes to
-// standard error, the Markdown table to standard output; a measurement that fails (its
+// that a drift of the load touches both alike, and the least time kept. A second table gives
+// the solves' time per iteration after the first, from the solve's own clock (its progress
+// callback), which leaves out the setup and the FFT planning that dominate short calls.
+// Progress goes to standard error, the Markdown tables to standard output; a measurement that fails (its
 // message on standard error) shows as "failed". SIGINT, SIGTERM or SIGHUP stops the program
 // after the measurement under way, with the table of what was measured.
 //
@@ -100,22 +102,51 @@ std::shared_ptr<asp::Grid> make_grid(std::int64_t n, bool one_thread) {
   return grid;
 }
 
+// What one call took: in all, and per iteration after the first (0 for calls without
+// iterations), from the solve's own clock as its progress callback sees it, so that setup
+// and FFT planning are left out of the latter.
+struct CallTimes {
+  double total = 0.0;
+  double per_iteration = 0.0;
+};
+
 // K iterations, whatever the error: the tolerance out of reach, no stall test. A solve that
-// ends otherwise (a breakdown) is not the work meant, and is refused.
-void solve_fixed(asp::Solver &solver, asp::System &system, asp::Control control, double value,
-                 int iterations) {
+// ends otherwise (a breakdown) is not the work meant, and is refused. Returns the seconds
+// per iteration after the first.
+double solve_fixed(asp::Solver &solver, asp::System &system, asp::Control control, double value,
+                   int iterations) {
   solver.set_option("tolerance", 1e-300);
   solver.set_option("stall_window", 0.0);
   solver.set_option("max_iterations", static_cast<double>(iterations));
+  struct Clock {
+    std::int64_t first_iteration = -1, last_iteration = -1;
+    double first = 0.0, last = 0.0;
+  } clock;
+  solver.set_progress(
+      [](std::int64_t iteration, double seconds, double, void *data) {
+        auto *c = static_cast<Clock *>(data);
+        if (c->first_iteration < 0) {
+          c->first_iteration = iteration;
+          c->first = seconds;
+        }
+        c->last_iteration = iteration;
+        c->last = seconds;
+        return 0;
+      },
+      &clock);
   solver.solve(system, control, value);
   if (solver.report().termination != asp::Termination::iteration_limit)
     throw std::runtime_error(std::string("the solve ended: ") +
                              asp::termination_name(solver.report().termination));
+  const std::int64_t timed = clock.last_iteration - clock.first_iteration;
+  return timed > 0 ? (clock.last - clock.first) / static_cast<double>(timed) : 0.0;
 }
 
-// The seconds of one library workload, from before its grid is made.
-double library_call(const std::string &workload, std::int64_t n, bool one_thread, int iterations) {
+// The times of one library workload, from before its grid is made.
+CallTimes library_call(const std::string &workload, std::int64_t n, bool one_thread,
+                       int iterations) {
   const auto start = std::chrono::steady_clock::now();
+  CallTimes t;
   auto grid = make_grid(n, one_thread);
   if (workload == "surface") {
     std::vector<double> h(static_cast<std::size_t>(grid->local_pixels()));
@@ -125,14 +156,15 @@ double library_call(const std::string &workload, std::int64_t n, bool one_thread
     scene.system->set_adhesion(0.01, 0.25);
     asp::Solver solver("bugnicourt");
     solver.set_option("variable", std::string("gap"));
-    solve_fixed(solver, *scene.system, asp::Control::mean_gap, 0.1 * scene.system->height_range(),
-                iterations);
+    t.per_iteration = solve_fixed(solver, *scene.system, asp::Control::mean_gap,
+                                  0.1 * scene.system->height_range(), iterations);
   } else {
     bench::ScalingScene scene = bench::scaling_scene(grid, workload.c_str());
     asp::Solver solver(workload);
-    solve_fixed(solver, *scene.system, scene.control, scene.value, iterations);
+    t.per_iteration = solve_fixed(solver, *scene.system, scene.control, scene.value, iterations);
   }
-  return bench::seconds_since(start);
+  t.total = bench::seconds_since(start);
+  return t;
 }
 
 // Starts `path` with `arguments` (argv[0] included), its standard output on `out_fd` (-1:
@@ -275,7 +307,7 @@ int default_iterations(std::int64_t n) {
   return static_cast<int>(std::lround(std::clamp(k, 10.0, 50.0)));
 }
 
-// The hidden mode: one measurement, its seconds on standard output.
+// The hidden mode: one measurement, its seconds in all and per iteration on standard output.
 int one_measurement(int argc, char **argv) {
   if (argc < 5) return 2;
   const std::string workload = argv[2];
@@ -298,9 +330,10 @@ int one_measurement(int argc, char **argv) {
       return 2;
   }
   try {
-    const double seconds = workload == "info" ? info_call(command, file, one_thread, no_wisdom)
-                                              : library_call(workload, n, one_thread, iterations);
-    std::printf("%.9g\n", seconds);
+    const CallTimes t = workload == "info"
+                            ? CallTimes{info_call(command, file, one_thread, no_wisdom), 0.0}
+                            : library_call(workload, n, one_thread, iterations);
+    std::printf("%.9g %.9g\n", t.total, t.per_iteration);
   } catch (const std::exception &e) {
     std::fprintf(stderr, "%s %lld on %s: %s\n", workload.c_str(), static_cast<long long>(n),
                  one_thread ? "1 thread" : "the default threads", e.what());
@@ -311,6 +344,7 @@ int one_measurement(int argc, char **argv) {
 
 struct Best {
   double defaults = -1.0, one = -1.0;  // seconds; -1: not measured, -2: failed
+  double defaults_iteration = -1.0, one_iteration = -1.0;  // per iteration; -1: none
 };
 
 const char *const usage =
@@ -445,13 +479,19 @@ int main(int argc, char **argv) {
                          static_cast<long long>(n), one_thread ? "1 thread" : "default", r + 1,
                          repeats);
             std::string output;
-            double seconds = -1.0;
-            if (capture("/proc/self/exe", arguments, output))
-              seconds = std::strtod(output.c_str(), nullptr);
+            double seconds = -1.0, per_iteration = 0.0;
+            if (capture("/proc/self/exe", arguments, output)) {
+              char *end = nullptr;
+              seconds = std::strtod(output.c_str(), &end);
+              per_iteration = std::strtod(end, nullptr);
+            }
             double &kept = one_thread ? b.one : b.defaults;
+            double &kept_iteration = one_thread ? b.one_iteration : b.defaults_iteration;
             if (seconds > 0.0) {
-              std::fprintf(stderr, "%.3f s\n", seconds);
+              std::fprintf(stderr, "%.3f s, %.4f s per iteration\n", seconds, per_iteration);
               if (kept < 0.0 || seconds < kept) kept = seconds;
+              if (per_iteration > 0.0 && (kept_iteration < 0.0 || per_iteration < kept_iteration))
+                kept_iteration = per_iteration;
             } else {
               std::fprintf(stderr, "failed\n");
               if (kept < 0.0) kept = -2.0;
@@ -482,34 +522,45 @@ int main(int argc, char **argv) {
       std::printf("%s %d at %lld^2", k > 0 ? "," : "", iterations_at(sizes[k]),
                   static_cast<long long>(sizes[k]));
   }
-  std::printf(". Least of %d; ratio = default / 1 thread.\n\n| workload | N² |", repeats);
-  for (int load : loads) {
-    const std::string name = load == 0 ? "idle" : std::to_string(load) + "/core";
-    std::printf(" %s: default s | %s: 1 thread s | %s: ratio |", name.c_str(), name.c_str(),
-                name.c_str());
-  }
-  std::printf("\n|---|---:|");
-  for (std::size_t level = 0; level < loads.size(); ++level) std::printf("---:|---:|---:|");
-  std::printf("\n");
-  for (const std::string &workload : workloads)
-    for (std::int64_t n : sizes) {
-      std::printf("| %s | %lld² |", workload.c_str(), static_cast<long long>(n));
-      for (const Best &b : best[workload][n]) {
-        const auto cell = [](double s) {
-          if (s > 0.0)
-            std::printf(" %.3f |", s);
-          else
-            std::printf(s < -1.5 ? " failed |" : " - |");
-        };
-        cell(b.defaults);
-        cell(b.one);
-        if (b.defaults > 0.0 && b.one > 0.0)
-          std::printf(" %.2f |", b.defaults / b.one);
-        else
-          std::printf(" - |");
-      }
-      std::printf("\n");
+  std::printf(". Least of %d; ratio = default / 1 thread.\n", repeats);
+  // One table of whole calls, then one of the time per iteration after the first (the
+  // solves only), which leaves out setup and FFT planning.
+  const auto table = [&](const char *title, double Best::*defaults, double Best::*one,
+                         bool solves_only) {
+    std::printf("\n%s\n\n| workload | N² |", title);
+    for (int load : loads) {
+      const std::string name = load == 0 ? "idle" : std::to_string(load) + "/core";
+      std::printf(" %s: default s | %s: 1 thread s | %s: ratio |", name.c_str(), name.c_str(),
+                  name.c_str());
     }
+    std::printf("\n|---|---:|");
+    for (std::size_t level = 0; level < loads.size(); ++level) std::printf("---:|---:|---:|");
+    std::printf("\n");
+    for (const std::string &workload : workloads) {
+      if (solves_only && (workload == "surface" || workload == "info")) continue;
+      for (std::int64_t n : sizes) {
+        std::printf("| %s | %lld² |", workload.c_str(), static_cast<long long>(n));
+        for (const Best &b : best[workload][n]) {
+          const auto cell = [](double s) {
+            if (s > 0.0)
+              std::printf(" %.4g |", s);
+            else
+              std::printf(s < -1.5 ? " failed |" : " - |");
+          };
+          cell(b.*defaults);
+          cell(b.*one);
+          if (b.*defaults > 0.0 && b.*one > 0.0)
+            std::printf(" %.2f |", b.*defaults / b.*one);
+          else
+            std::printf(" - |");
+        }
+        std::printf("\n");
+      }
+    }
+  };
+  table("Whole calls (s), FFT planning included:", &Best::defaults, &Best::one, false);
+  table("Per iteration after the first (s):", &Best::defaults_iteration, &Best::one_iteration,
+        true);
   std::fflush(stdout);
   if (stop_signal != 0) {
     set_stop_signals(SIG_DFL);

@@ -196,7 +196,12 @@ ASP_EXPORT int asp_grid_set_fft_planning(asp_grid *grid, int planning);
  * The variables are read when the grid is created.
  * Waiting threads sleep: a helper thread spins at most some tens of microseconds after a
  * pass before it sleeps, and a pass never waits for a thread that has not started, because
- * the calling thread takes the work of helpers the operating system has not run yet. On a
+ * the calling thread takes the work of helpers the operating system has not run yet; when a
+ * helper was stopped by the system in the middle of its work (other processes want its
+ * core), the passes of the next moments (20 ms, doubling while it recurs, up to 1 s) run on
+ * the calling thread alone. FFTW's threaded transforms run on the same threads: the library
+ * sets FFTW's thread callback (fftw_threads_set_callback), which is process-wide, so that
+ * other users of FFTW's threads in the process run theirs there too. On a
  * machine whose cores are busy with other processes, a solve with the default count therefore
  * takes about the time it takes on one thread (docs/performance.md, "A busy machine"), and on
  * an idle machine it uses every core. A pass started while another thread of the process runs

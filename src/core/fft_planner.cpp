@@ -4,6 +4,7 @@
 #include <fftw3.h>
 
 #include "core/loops.hpp"
+#include "core/thread_pool.hpp"
 
 namespace asp {
 namespace fft_planner {
@@ -43,9 +44,26 @@ PlanningTimeLimit::PlanningTimeLimit(FftPlanning planning) {
 
 PlanningTimeLimit::~PlanningTimeLimit() { fftw_set_timelimit(FFTW_NO_TIMELIMIT); }
 
+#ifdef ASPERITY_THREADS
+namespace {
+// FFTW's threaded transforms hand their jobs here, and so to the library's pool: the calling
+// thread takes the jobs of helpers the system has not run yet, where FFTW's own workers would
+// be waited for (core/thread_pool.hpp).
+void run_fftw_jobs(void *(*work)(char *), char *jobs, std::size_t size, int count, void *) {
+  thread_pool::run_jobs(count, count, [&](std::int64_t k) {
+    work(jobs + size * static_cast<std::size_t>(k));
+  });
+}
+}  // namespace
+#endif
+
 bool threads_ready() {
 #ifdef ASPERITY_THREADS
-  static const bool ready = fftw_init_threads() != 0;
+  static const bool ready = [] {
+    if (fftw_init_threads() == 0) return false;
+    fftw_threads_set_callback(&run_fftw_jobs, nullptr);
+    return true;
+  }();
   return ready;
 #else
   return false;

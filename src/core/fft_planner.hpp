@@ -67,7 +67,9 @@ class PlanningTimeLimit {
 
 // FFTW's threads, set up once (call under the lock) before the first threaded plan or the
 // first wisdom import or export: wisdom may hold threaded plans, which FFTW reads only once
-// its threads are set up. False if the build has none or FFTW could not set them up.
+// its threads are set up. FFTW's threaded transforms then run their jobs on the library's
+// pool (fftw_threads_set_callback; process-wide, so that other FFTW users of the process run
+// theirs there too). False if the build has none or FFTW could not set them up.
 bool threads_ready();
 
 // Plans made while it lives, of transforms of `points` points, run on `threads` threads

@@ -27,6 +27,15 @@ using Clock = std::chrono::steady_clock;
 // nothing.
 constexpr auto spin_time = std::chrono::microseconds(50);
 
+// A loop whose caller, done with its own jobs, waited longer than this and longer than it
+// worked, waited for a helper that the system stopped running in the middle of a job: the
+// machine's cores are busy with other processes. Loops then run on their callers alone for
+// a while, first_solo_period, doubled at each such loop up to last_solo_period, and the
+// helpers are tried again after it. On an idle machine a caller waits at most about one job.
+constexpr auto stall = std::chrono::microseconds(200);
+constexpr auto first_solo_period = std::chrono::milliseconds(20);
+constexpr auto last_solo_period = std::chrono::milliseconds(1000);
+
 // The most helpers the pool starts, whatever a grid asks for.
 constexpr int most_helpers = 255;
 
@@ -147,17 +156,23 @@ class Pool {
     // On the heap and shared: a helper woken late may still look at it (to find no job left)
     // after this call has returned.
     const auto loop = std::make_shared<Loop>(job, context, jobs);
+    const auto start = Clock::now();
     std::unique_lock<std::mutex> busy(busy_, std::defer_lock);
-    const int helpers =
-        wanted > 0 && !inside_job && !forked.load() && busy.try_lock() ? start_helpers(wanted) : 0;
+    const int helpers = wanted > 0 && !inside_job && !forked.load() &&
+                                start.time_since_epoch().count() >= solo_until_.load() &&
+                                busy.try_lock()
+                            ? start_helpers(wanted)
+                            : 0;
     if (helpers > 0) offer(loop, helpers);
     {
       const InsideJob mark;
       loop->take_jobs();
     }
     if (helpers > 0) {
+      const auto worked = Clock::now();
       withdraw();
       loop->wait();
+      judge_the_wait(start, worked, Clock::now());
     }
     if (loop->error) std::rethrow_exception(loop->error);
   }
@@ -181,6 +196,19 @@ class Pool {
     } catch (const std::system_error &) {
     }
     return std::min(wanted, static_cast<int>(helpers_.size()));
+  }
+
+  // After a loop with helpers (by the caller that holds busy_): a wait for a helper far
+  // longer than the caller's own work starts a period of loops without helpers, longer each
+  // time it happens again; a loop without such a wait makes the next period short again.
+  void judge_the_wait(Clock::time_point start, Clock::time_point worked, Clock::time_point end) {
+    const auto waited = end - worked;
+    if (waited > stall && waited > worked - start) {
+      solo_until_.store((end + solo_period_).time_since_epoch().count());
+      solo_period_ = std::min<Clock::duration>(2 * solo_period_, last_solo_period);
+    } else {
+      solo_period_ = first_solo_period;
+    }
   }
 
   // Makes the loop the one `helpers` helpers join, waking those asleep.
@@ -236,6 +264,9 @@ class Pool {
   std::condition_variable wake_;
   std::vector<std::thread> helpers_;
   std::atomic<std::uint64_t> generation_{0};
+  // Until when loops run without helpers (Clock ticks), and the next such period (busy_).
+  std::atomic<Clock::rep> solo_until_{0};
+  Clock::duration solo_period_ = first_solo_period;
   std::shared_ptr<Loop> current_;
   int wanted_ = 0;
   int sleeping_ = 0;

@@ -6,8 +6,12 @@
 // jobs itself: a loop never waits for a thread that has not started, only for jobs already
 // under way. Helpers spin for a few microseconds after a loop, so that the next one finds them
 // awake on an idle machine, and then sleep on a condition variable: they never spin against
-// other processes for longer than that. This is what keeps a solve on a busy machine about
-// as fast as on one thread, where OpenMP's fork-join teams, which wait for every thread and
+// other processes for longer than that. A helper that the system stops in the middle of a
+// job (its core is wanted by others) makes its caller wait; when a caller has waited longer
+// than it worked, the loops of the next few milliseconds (doubling while it happens again,
+// up to a second) run on their callers alone, and then the helpers are tried again. FFTW's
+// threaded transforms hand their jobs to the pool too (core/fft_planner.cpp). This is what
+// keeps a solve on a busy machine about as fast as on one thread, where OpenMP's fork-join teams, which wait for every thread and
 // spin while they wait, were many times slower (docs/performance.md, "A busy machine").
 //
 // The pool serves one loop at a time. A loop started while another thread of the process
