@@ -48,9 +48,28 @@ struct HeightMap {
   int64_t missing = 0;                        // how many heights are NaN
 };
 
+// The most a reader allocates for one file (docs/robustness.md). Measured surfaces come from
+// instruments, colleagues and the web: every size a file declares (a shape, a matrix, an
+// archive member's length) is checked against these limits and against what the file can
+// hold (its length; for a zip member, its compressed length) before anything of that size is
+// allocated, and an archive member is inflated no further than the size its header implies.
+// A file beyond a limit is refused with a FileError that names the limit.
+struct ReadLimits {
+  // Heights in one map, nx * ny: 2^28 (16384 x 16384), 2 GiB as doubles. Instruments'
+  // largest maps (stitched optical maps, 8192 x 8192 AFM scans) have 2^26 points or fewer.
+  int64_t max_points = int64_t(1) << 28;
+  // Bytes of an .x3p file's main.xml once inflated: 4 MiB. With its points in bindata/ it
+  // takes a few kB; points written inline (Record3/DataList) take about 25 bytes each.
+  int64_t max_xml_bytes = int64_t(4) << 20;
+};
+
 // Reads a height map. FileFormat::automatic chooses by content: the .npy magic string, a zip
-// archive (x3p), otherwise text. Throws FileError.
-HeightMap read_height_map(const std::string &path, FileFormat format = FileFormat::automatic);
+// archive (x3p), otherwise text. Only regular files are read: a directory, a device
+// (/dev/zero), a FIFO or a socket is refused before a byte is read, and bytes written to a
+// file after it was opened are not read. Throws FileError; std::invalid_argument when a limit
+// is below 1.
+HeightMap read_height_map(const std::string &path, FileFormat format = FileFormat::automatic,
+                          const ReadLimits &limits = ReadLimits());
 
 // The format a file name suggests, or automatic for other names (".txt", ".asc", ".csv",
 // ".dat" -> text; ".npy" -> npy; ".x3p" -> x3p); and a format's name ("text", "npy", "x3p").

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // MD5 (RFC 1321), for the checksums of .x3p archives.
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstring>
@@ -66,30 +67,48 @@ void process_block(const unsigned char *block, std::array<uint32_t, 4> &state) {
 
 }  // namespace
 
-std::string md5_hex(const std::string &bytes) {
-  std::array<uint32_t, 4> state = {0x67452301, 0xefcdab89, 0x98badcfe, 0x10325476};
-  const auto *data = reinterpret_cast<const unsigned char *>(bytes.data());
-  const size_t n = bytes.size();
-  size_t i = 0;
-  for (; i + 64 <= n; i += 64) process_block(data + i, state);
+void Md5::update(const char *data, size_t n) {
+  const auto *u = reinterpret_cast<const unsigned char *>(data);
+  length_ += n;
+  if (filled_ > 0) {
+    const size_t take = std::min(n, sizeof block_ - filled_);
+    std::memcpy(block_ + filled_, u, take);
+    filled_ += take;
+    u += take;
+    n -= take;
+    if (filled_ < sizeof block_) return;
+    process_block(block_, state_);
+    filled_ = 0;
+  }
+  for (; n >= 64; u += 64, n -= 64) process_block(u, state_);
+  std::memcpy(block_, u, n);
+  filled_ = n;
+}
+
+std::string Md5::hex() {
   // Padding: 0x80, zeros to 56 mod 64, then the length in bits, little-endian.
   unsigned char tail[128] = {};
-  const size_t rest = n - i;
-  std::memcpy(tail, data + i, rest);
-  tail[rest] = 0x80;
-  const size_t tail_len = rest < 56 ? 64 : 128;
-  const uint64_t bits = uint64_t(n) * 8;
+  std::memcpy(tail, block_, filled_);
+  tail[filled_] = 0x80;
+  const size_t tail_len = filled_ < 56 ? 64 : 128;
+  const uint64_t bits = length_ * 8;
   for (int k = 0; k < 8; ++k) tail[tail_len - 8 + k] = static_cast<unsigned char>(bits >> (8 * k));
-  for (size_t k = 0; k < tail_len; k += 64) process_block(tail + k, state);
+  for (size_t k = 0; k < tail_len; k += 64) process_block(tail + k, state_);
   static const char *hex = "0123456789abcdef";
   std::string out;
-  for (uint32_t word : state)
+  for (uint32_t word : state_)
     for (int k = 0; k < 4; ++k) {
       const unsigned byte = (word >> (8 * k)) & 0xff;
       out += hex[byte >> 4];
       out += hex[byte & 15];
     }
   return out;
+}
+
+std::string md5_hex(const std::string &bytes) {
+  Md5 md5;
+  md5.update(bytes.data(), bytes.size());
+  return md5.hex();
 }
 
 }  // namespace asp::io::detail

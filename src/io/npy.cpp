@@ -2,6 +2,7 @@
 // NumPy .npy files: reading versions 1.0, 2.0 and 3.0 of the format (little- and big-endian
 // float64, float32 and signed or unsigned integers, shape (n,) or (rows, cols), C or Fortran
 // order) and writing float64 arrays.
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
@@ -128,6 +129,12 @@ class HeaderParser {
   }
 };
 
+// A .npy header longer than this is refused before it is read: NumPy writes about 128 bytes
+// for an array of numbers (its own reader refuses more than 10000 by default).
+constexpr size_t kMaxHeaderBytes = 65536;
+// The data are read in pieces of this size.
+constexpr size_t kPieceBytes = 1 << 16;
+
 uint64_t load_unsigned(const unsigned char *p, int size, bool big_endian) {
   uint64_t v = 0;
   for (int k = 0; k < size; ++k) {
@@ -149,7 +156,10 @@ std::string shape_text(const std::vector<int64_t> &shape) {
 
 }  // namespace
 
-HeightMap read_npy(const std::string &path, const std::string &bytes) {
+HeightMap read_npy(InputFile &file, const ReadLimits &limits) {
+  const std::string &path = file.path();
+  char start[12];
+  const std::string bytes(start, file.read(start, sizeof start));
   if (bytes.size() < 6 || bytes.compare(0, 6, "\x93NUMPY") != 0)
     throw FileError(path + ": not a .npy file (the first 6 bytes are not \\x93NUMPY)");
   if (bytes.size() < 10) throw FileError(path + ": truncated .npy file: no header length");
@@ -167,10 +177,21 @@ HeightMap read_npy(const std::string &path, const std::string &bytes) {
     throw FileError(path + ": unsupported .npy format version " + std::to_string(major) + "." +
                     std::to_string(minor) + " (versions 1.0, 2.0 and 3.0 are read)");
   }
-  if (bytes.size() < header_start + header_len)
+  // What the file can hold, then the limit, before the header is read.
+  const auto file_size = static_cast<size_t>(file.size());
+  if (file_size < header_start + header_len)
     throw FileError(path + ": truncated .npy file: the header of " + std::to_string(header_len) +
-                    " bytes ends after byte " + std::to_string(bytes.size()));
-  HeaderParser header(path, bytes.substr(header_start, header_len));
+                    " bytes ends after byte " + std::to_string(file_size));
+  if (header_len > kMaxHeaderBytes)
+    throw FileError(path + ": a .npy header of " + std::to_string(header_len) +
+                    " bytes: more than the limit of " + std::to_string(kMaxHeaderBytes) +
+                    " bytes for a header (arrays of numbers have headers of about 128)");
+  std::string header_text(header_len, '\0');
+  file.seek(static_cast<int64_t>(header_start));
+  if (file.read(&header_text[0], header_len) != header_len)
+    throw FileError(path + ": truncated .npy file: the header of " + std::to_string(header_len) +
+                    " bytes is cut short");
+  HeaderParser header(path, header_text);
   header.parse();
 
   // The dtype: a byte order ('<', '>', '|' or '=') then a kind and a size.
@@ -207,9 +228,12 @@ HeightMap read_npy(const std::string &path, const std::string &bytes) {
     throw FileError(path + ": an empty array of shape " + shape_text(shape));
   if (nx > std::numeric_limits<int64_t>::max() / ny / size)
     throw FileError(path + ": shape " + shape_text(shape) + " too large");
+  if (nx > limits.max_points / ny)
+    throw FileError(path + ": shape " + shape_text(shape) + ": more than " +
+                    points_limit_text(limits));
   const size_t count = static_cast<size_t>(nx * ny);
   const size_t data_start = header_start + header_len;
-  const size_t available = bytes.size() - data_start;
+  const size_t available = file_size - data_start;
   if (available < count * size)
     throw FileError(path + ": truncated .npy data: shape " + shape_text(shape) + " of '" + d +
                     "' needs " + std::to_string(count * size) + " bytes after the header (byte " +
@@ -219,12 +243,22 @@ HeightMap read_npy(const std::string &path, const std::string &bytes) {
   map.nx = nx;
   map.ny = ny;
   map.heights.resize(count);
-  const unsigned char *data = u + data_start;
-  for (int64_t y = 0; y < ny; ++y)
-    for (int64_t x = 0; x < nx; ++x) {
-      // [row, column] = [y, x] in either order; Fortran order stores rows fastest.
-      const size_t index = header.fortran_order ? size_t(y + ny * x) : size_t(x + nx * y);
-      const uint64_t raw = load_unsigned(data + index * size, size, big_endian);
+  // The data in pieces, in the file's order: element k is [row, column] = [y, x] with
+  // k = x + nx * y in C order and k = y + ny * x in Fortran order (rows fastest).
+  std::vector<char> piece(kPieceBytes);
+  file.seek(static_cast<int64_t>(data_start));
+  size_t k = 0;
+  while (k < count) {
+    const size_t n = std::min(count - k, kPieceBytes / size);
+    const size_t got = file.read(piece.data(), n * size);
+    if (got != n * size)
+      throw FileError(path + ": truncated .npy data: shape " + shape_text(shape) + " of '" + d +
+                      "' needs " + std::to_string(count * size) +
+                      " bytes after the header, the file ends after " +
+                      std::to_string(k * size + got));
+    const auto *p = reinterpret_cast<const unsigned char *>(piece.data());
+    for (size_t e = 0; e < n; ++e, ++k) {
+      const uint64_t raw = load_unsigned(p + e * size, size, big_endian);
       double v;
       if (kind == 'f' && size == 8) {
         std::memcpy(&v, &raw, 8);
@@ -240,8 +274,12 @@ HeightMap read_npy(const std::string &path, const std::string &bytes) {
         const int shift = 64 - 8 * size;
         v = static_cast<double>(static_cast<int64_t>(raw << shift) >> shift);
       }
-      map.heights[x + nx * y] = v;
+      const size_t index = header.fortran_order
+                               ? static_cast<size_t>(k / ny) + static_cast<size_t>(nx) * (k % ny)
+                               : k;
+      map.heights[index] = v;
     }
+  }
   const double nan = std::numeric_limits<double>::quiet_NaN();
   map.lx = nan;
   map.ly = nan;

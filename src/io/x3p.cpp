@@ -5,7 +5,6 @@
 #include <zip.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -51,9 +50,29 @@ pugi::xml_node child(pugi::xml_node node, const char *name) {
   return {};
 }
 
+struct FileCloser {
+  void operator()(zip_file_t *file) const { zip_fclose(file); }
+};
+using MemberFile = std::unique_ptr<zip_file_t, FileCloser>;
+
+// Members are inflated in pieces of this size.
+constexpr size_t kPieceBytes = 1 << 16;
+// The most deflate makes of a compressed byte: a copy of 258 bytes costs at least 2 bits.
+constexpr zip_uint64_t kDeflateRatio = 1032;
+// A valid-points mask may be this much longer than its points need (trailing padding).
+constexpr zip_uint64_t kMaskSlackBytes = 1 << 16;
+
+// A member of the archive and the size its directory entry declares once inflated.
+struct Member {
+  std::string name;
+  zip_uint64_t index = 0;
+  zip_uint64_t size = 0;
+};
+
 class Reader {
  public:
-  explicit Reader(const std::string &path) : path_(path) {}
+  Reader(const std::string &path, int64_t archive_bytes)
+      : path_(path), archive_bytes_(static_cast<zip_uint64_t>(archive_bytes)) {}
 
   [[noreturn]] void fail(const std::string &what) const { throw FileError(path_ + ": " + what); }
 
@@ -88,31 +107,75 @@ class Reader {
     return v;
   }
 
-  // An entry of the archive, or FileError naming it.
-  std::string entry(zip_t *archive, const std::string &name, const std::string &why) const {
+  // A member of the archive, or FileError naming it. Its declared size is refused when the
+  // archive cannot hold it: compressed bytes beyond the archive's own length, or more bytes
+  // than its compressed ones inflate to (stored: as many; deflated: 1032 times as many).
+  // Other compression methods, whose expansion has no such bound, are refused (x3p writers
+  // deflate).
+  Member member(zip_t *archive, const std::string &name, const std::string &why) const {
     const zip_int64_t index = zip_name_locate(archive, name.c_str(), 0);
     if (index < 0) fail("the archive has no " + name + " (" + why + ")");
     zip_stat_t stat;
-    if (zip_stat_index(archive, index, 0, &stat) != 0 || !(stat.valid & ZIP_STAT_SIZE))
+    zip_stat_init(&stat);
+    const zip_uint64_t needed = ZIP_STAT_SIZE | ZIP_STAT_COMP_SIZE | ZIP_STAT_COMP_METHOD;
+    if (zip_stat_index(archive, static_cast<zip_uint64_t>(index), 0, &stat) != 0 ||
+        (stat.valid & needed) != needed)
       fail("cannot read " + name + " in the archive: " + zip_strerror(archive));
-    zip_file_t *file = zip_fopen_index(archive, index, 0);
-    if (!file) fail("cannot read " + name + " in the archive: " + zip_strerror(archive));
-    // Read in pieces rather than allocating the size the archive declares, which a damaged
-    // or hostile archive can set to anything: memory grows only with what is really there.
-    std::string bytes;
-    std::vector<char> piece(1 << 16);
-    zip_uint64_t total = 0;
-    while (total < stat.size) {
-      const zip_uint64_t want = std::min<zip_uint64_t>(piece.size(), stat.size - total);
-      const zip_int64_t got = zip_fread(file, piece.data(), want);
-      if (got <= 0) break;
-      bytes.append(piece.data(), static_cast<size_t>(got));
-      total += static_cast<zip_uint64_t>(got);
+    const std::string declares = name + " declares " + std::to_string(stat.size) +
+                                 " bytes compressed into " + std::to_string(stat.comp_size);
+    if (stat.comp_size > archive_bytes_)
+      fail(declares + ", but the whole archive has " + std::to_string(archive_bytes_));
+    if (stat.comp_method == ZIP_CM_STORE) {
+      if (stat.size > stat.comp_size) fail(declares + ", stored uncompressed");
+    } else if (stat.comp_method == ZIP_CM_DEFLATE) {
+      if (stat.size > 0 && (stat.size - 1) / kDeflateRatio >= stat.comp_size)
+        fail(declares + ": more than deflate makes of them (" + std::to_string(kDeflateRatio) +
+             " times as many)");
+    } else {
+      fail(name + " is compressed by method " + std::to_string(stat.comp_method) +
+           ": only stored and deflated members are read");
     }
-    const bool ok = total == stat.size;
-    std::string error = ok ? "" : zip_file_strerror(file);
-    zip_fclose(file);
-    if (!ok) fail("cannot read " + name + " in the archive: " + error);
+    return {name, static_cast<zip_uint64_t>(index), stat.size};
+  }
+
+  // Inflates a member to the size it declares and no further, handing it to take(bytes, n)
+  // in pieces of kPieceBytes (the last one shorter); FileError when it inflates to less or
+  // to more than that size, or when its CRC is wrong.
+  template <class Take>
+  void inflate(zip_t *archive, const Member &m, Take take) const {
+    MemberFile file(zip_fopen_index(archive, m.index, 0));
+    if (!file) fail("cannot read " + m.name + " in the archive: " + zip_strerror(archive));
+    std::vector<char> piece(static_cast<size_t>(std::min<zip_uint64_t>(kPieceBytes, m.size)) + 1);
+    zip_uint64_t total = 0;
+    while (total < m.size) {
+      const zip_uint64_t want = std::min<zip_uint64_t>(kPieceBytes, m.size - total);
+      zip_uint64_t filled = 0;
+      while (filled < want) {
+        const zip_int64_t got = zip_fread(file.get(), piece.data() + filled, want - filled);
+        if (got < 0)
+          fail("cannot read " + m.name + " in the archive: " + zip_file_strerror(file.get()));
+        if (got == 0)
+          fail("cannot read " + m.name + " in the archive: it ends after " +
+               std::to_string(total + filled) + " of the " + std::to_string(m.size) +
+               " bytes it declares");
+        filled += static_cast<zip_uint64_t>(got);
+      }
+      take(piece.data(), static_cast<size_t>(want));
+      total += want;
+    }
+    // One byte more must be the end: libzip then checks the CRC and the length.
+    const zip_int64_t more = zip_fread(file.get(), piece.data(), 1);
+    if (more > 0)
+      fail(m.name + " inflates to more than the " + std::to_string(m.size) +
+           " bytes the archive declares for it");
+    if (more < 0)
+      fail("cannot read " + m.name + " in the archive: " + zip_file_strerror(file.get()));
+  }
+
+  std::string whole(zip_t *archive, const Member &m) const {
+    std::string bytes;
+    bytes.reserve(static_cast<size_t>(m.size));
+    inflate(archive, m, [&](const char *p, size_t n) { bytes.append(p, n); });
     return bytes;
   }
 
@@ -122,7 +185,15 @@ class Reader {
 
  private:
   std::string path_;
+  zip_uint64_t archive_bytes_;
 };
+
+// A checksum as main.xml gives it, in lower case.
+std::string lower_hex(std::string text) {
+  for (char &c : text)
+    if (c >= 'A' && c <= 'F') c = static_cast<char>(c - 'A' + 'a');
+  return text;
+}
 
 struct Axis {
   double increment = 1.0;
@@ -149,19 +220,14 @@ Axis lateral_axis(const Reader &reader, pugi::xml_node axes, const char *name) {
 
 }  // namespace
 
-HeightMap read_x3p(const std::string &path) {
-  Reader reader(path);
-  {
-    // Tell a missing file from a broken archive.
-    std::FILE *f = std::fopen(path.c_str(), "rb");
-    if (!f) {
-      const int err = errno;
-      throw FileError("cannot open '" + path + "' for reading: " + std::strerror(err));
-    }
-    std::fclose(f);
-  }
+HeightMap read_x3p(InputFile &input, const ReadLimits &limits) {
+  const std::string &path = input.path();
+  Reader reader(path, input.size());
+  input.seek(0);
   int error = 0;
-  Archive archive(zip_open(path.c_str(), ZIP_RDONLY, &error));
+  // libzip reads through its own copy of the descriptor and, once the archive is open,
+  // closes ours.
+  Archive archive(zip_fdopen(input.descriptor(), 0, &error));
   if (!archive) {
     zip_error_t ze;
     zip_error_init_with_code(&ze, error);
@@ -169,10 +235,16 @@ HeightMap read_x3p(const std::string &path) {
     zip_error_fini(&ze);
     reader.fail("not a readable .x3p (zip) archive: " + message);
   }
+  input.release();
   zip_t *za = archive.get();
-  const std::string xml = reader.entry(za, "main.xml", "every .x3p file has one");
+  const Member xml_member = reader.member(za, "main.xml", "every .x3p file has one");
+  if (xml_member.size > static_cast<zip_uint64_t>(limits.max_xml_bytes))
+    reader.fail("main.xml inflates to " + std::to_string(xml_member.size) +
+                " bytes (as the archive declares): more than the limit of " +
+                std::to_string(limits.max_xml_bytes) + " bytes for main.xml");
+  std::string xml = reader.whole(za, xml_member);  // parsed in place: outlives the document
   pugi::xml_document document;
-  const pugi::xml_parse_result parsed = document.load_buffer(xml.data(), xml.size());
+  const pugi::xml_parse_result parsed = document.load_buffer_inplace(&xml[0], xml.size());
   if (!parsed)
     reader.fail("main.xml is not valid XML (byte " + std::to_string(parsed.offset) +
                 "): " + parsed.description());
@@ -225,51 +297,58 @@ HeightMap read_x3p(const std::string &path) {
   if (nx <= 0 || ny <= 0) reader.fail("main.xml: an empty matrix (SizeX or SizeY is 0)");
   if (feature == "PRF" && ny != 1)
     reader.fail("main.xml: a profile (PRF) with SizeY = " + std::to_string(ny));
-  if (nx > (int64_t(1) << 40) / ny) reader.fail("main.xml: the matrix is too large");
+  if (nx > std::min(limits.max_points, std::numeric_limits<int64_t>::max() / 8) / ny)
+    reader.fail("main.xml: a matrix of " + std::to_string(nx) + " x " + std::to_string(ny) +
+                " points: more than " + points_limit_text(limits));
   const size_t count = static_cast<size_t>(nx * ny);
 
   HeightMap map;
   map.nx = nx;
   map.ny = ny;
-  map.heights.assign(count, 0.0);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const bool integer = z_type == "I" || z_type == "L";
 
   if (pugi::xml_node link = child(record3, "DataLink")) {
     const std::string bin =
         trim(reader.need(link, "Record3/DataLink", {"PointDataLink"}).text().get());
-    const std::string data = reader.entry(za, bin, "named by Record3/DataLink/PointDataLink");
+    const Member data = reader.member(za, bin, "named by Record3/DataLink/PointDataLink");
+    const size_t bytes = count * static_cast<size_t>(size);
+    if (data.size != bytes)
+      reader.fail(bin + " inflates to " + std::to_string(data.size) +
+                  " bytes (as the archive declares), but " + std::to_string(nx) + " x " +
+                  std::to_string(ny) + " points of DataType " + z_type + " take " +
+                  std::to_string(bytes));
+    map.heights.resize(count);
+    Md5 md5;
+    size_t i = 0;
+    reader.inflate(za, data, [&](const char *piece, size_t n) {
+      md5.update(piece, n);
+      const auto *u = reinterpret_cast<const unsigned char *>(piece);
+      for (size_t at = 0; at < n; at += static_cast<size_t>(size), ++i) {
+        uint64_t raw = 0;
+        for (int k = size - 1; k >= 0; --k) raw = (raw << 8) | u[at + static_cast<size_t>(k)];
+        double v;
+        if (z_type == "D") {
+          std::memcpy(&v, &raw, 8);
+        } else if (z_type == "F") {
+          const auto raw32 = static_cast<uint32_t>(raw);
+          float f;
+          std::memcpy(&f, &raw32, 4);
+          v = f;
+        } else if (z_type == "L") {
+          v = static_cast<int32_t>(static_cast<uint32_t>(raw));
+        } else {
+          v = static_cast<int16_t>(static_cast<uint16_t>(raw));
+        }
+        map.heights[i] = v;
+      }
+    });
     if (pugi::xml_node sum = child(link, "MD5ChecksumPointData")) {
-      std::string expected = trim(sum.text().get());
-      for (char &c : expected)
-        if (c >= 'A' && c <= 'F') c = static_cast<char>(c - 'A' + 'a');
-      const std::string actual = md5_hex(data);
+      const std::string expected = lower_hex(trim(sum.text().get()));
+      const std::string actual = md5.hex();
       if (expected != actual)
         reader.fail("the MD5 checksum of " + bin + " is " + actual +
                     ", but Record3/DataLink/MD5ChecksumPointData says " + expected);
-    }
-    if (data.size() != count * size)
-      reader.fail(bin + " has " + std::to_string(data.size()) + " bytes, but " +
-                  std::to_string(nx) + " x " + std::to_string(ny) + " points of DataType " +
-                  z_type + " take " + std::to_string(count * size));
-    const auto *u = reinterpret_cast<const unsigned char *>(data.data());
-    for (size_t i = 0; i < count; ++i) {
-      uint64_t raw = 0;
-      for (int k = size - 1; k >= 0; --k) raw = (raw << 8) | u[i * size + k];
-      double v;
-      if (z_type == "D") {
-        std::memcpy(&v, &raw, 8);
-      } else if (z_type == "F") {
-        const auto raw32 = static_cast<uint32_t>(raw);
-        float f;
-        std::memcpy(&f, &raw32, 4);
-        v = f;
-      } else if (z_type == "L") {
-        v = static_cast<int32_t>(static_cast<uint32_t>(raw));
-      } else {
-        v = static_cast<int16_t>(static_cast<uint16_t>(raw));
-      }
-      map.heights[i] = v;
     }
     // The valid-points mask: one bit per point, least significant bit first, set = valid.
     std::string mask_name;
@@ -279,29 +358,37 @@ HeightMap read_x3p(const std::string &path) {
     else if (integer && reader.has_entry(za, "bindata/valid.bin"))
       mask_name = "bindata/valid.bin";
     if (!mask_name.empty()) {
-      const std::string mask = reader.entry(za, mask_name, "the valid points' mask");
+      const Member mask_member = reader.member(za, mask_name, "the valid points' mask");
+      const size_t need = (count + 7) / 8;
+      if (mask_member.size < need || mask_member.size > need + kMaskSlackBytes)
+        reader.fail(mask_name + " has " + std::to_string(mask_member.size) + " bytes, but " +
+                    std::to_string(count) + " points need " + std::to_string(need));
+      const std::string mask = reader.whole(za, mask_member);
       if (pugi::xml_node sum = child(link, "MD5ChecksumValidPoints")) {
-        std::string expected = trim(sum.text().get());
-        for (char &c : expected)
-          if (c >= 'A' && c <= 'F') c = static_cast<char>(c - 'A' + 'a');
+        const std::string expected = lower_hex(trim(sum.text().get()));
         const std::string actual = md5_hex(mask);
         if (expected != actual)
           reader.fail("the MD5 checksum of " + mask_name + " is " + actual +
                       ", but Record3/DataLink/MD5ChecksumValidPoints says " + expected);
       }
-      if (mask.size() < (count + 7) / 8)
-        reader.fail(mask_name + " has " + std::to_string(mask.size()) + " bytes, but " +
-                    std::to_string(count) + " points need " + std::to_string((count + 7) / 8));
-      for (size_t i = 0; i < count; ++i)
-        if (!((static_cast<unsigned char>(mask[i / 8]) >> (i % 8)) & 1)) map.heights[i] = nan;
+      for (size_t p = 0; p < count; ++p)
+        if (!((static_cast<unsigned char>(mask[p / 8]) >> (p % 8)) & 1)) map.heights[p] = nan;
     }
   } else if (pugi::xml_node list = child(record3, "DataList")) {
+    // The points are counted before any is stored.
+    size_t points = 0;
+    for (pugi::xml_node datum = list.first_child(); datum; datum = datum.next_sibling())
+      if (datum.type() == pugi::node_element) ++points;
+    if (points > count)
+      reader.fail("Record3/DataList has more than the " + std::to_string(count) +
+                  " points of the matrix");
+    if (points != count)
+      reader.fail("Record3/DataList has " + std::to_string(points) + " points, the matrix " +
+                  std::to_string(count));
+    map.heights.resize(count);
     size_t i = 0;
     for (pugi::xml_node datum = list.first_child(); datum; datum = datum.next_sibling()) {
       if (datum.type() != pugi::node_element) continue;
-      if (i == count)
-        reader.fail("Record3/DataList has more than the " + std::to_string(count) +
-                    " points of the matrix");
       const std::string text = trim(datum.text().get());
       if (text.empty()) {
         map.heights[i++] = nan;  // an empty Datum is a missing point
@@ -314,9 +401,6 @@ HeightMap read_x3p(const std::string &path) {
                     "' is not a number");
       map.heights[i++] = v;
     }
-    if (i != count)
-      reader.fail("Record3/DataList has " + std::to_string(i) + " points, the matrix " +
-                  std::to_string(count));
   } else {
     reader.fail("main.xml's Record3 has neither a DataLink nor a DataList");
   }

@@ -1,12 +1,16 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Writes the binary seeds of the fuzz corpora: the programs of corpus/c_api/ (in the encoding
-fuzz_c_api.cpp reads) and small .npy arrays with missing points for corpus/npy_reader/. The
-standard library only; the files are committed and the tests do not run this script:
+fuzz_c_api.cpp reads), small .npy arrays with missing points for corpus/npy_reader/, and the
+hostile files of the readers' limits (docs/robustness.md): x3p archives written byte by byte,
+whose headers declare what damaged or malicious archives declare, .npy files declaring more
+than they hold and text with decimal commas. The standard library only; the files are
+committed and the tests do not run this script:
     python3 tests/fuzz/make_seeds.py
 """
 import os
 import struct
+import zlib
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -243,6 +247,115 @@ def npy(shape, values, descr="<f8"):
     return b"\x93NUMPY\x01\x00" + struct.pack("<H", len(header)) + header.encode() + data
 
 
+def deflated(pieces, strategy=zlib.Z_DEFAULT_STRATEGY):
+    """Raw deflate (as in zip archives) of the byte strings or (byte, count) runs in pieces:
+    the compressed bytes, the CRC-32 and the size of what they inflate to."""
+    z = zlib.compressobj(6, zlib.DEFLATED, -15, 8, strategy)
+    out, crc, size = [], 0, 0
+    for piece in pieces:
+        if isinstance(piece, tuple):
+            byte, count = piece
+            block = byte * min(count, 1 << 20)
+            chunks = [block] * (count // len(block)) + [block[:count % len(block)]]
+        else:
+            chunks = [piece]
+        for chunk in chunks:
+            crc = zlib.crc32(chunk, crc)
+            size += len(chunk)
+            out.append(z.compress(chunk))
+    out.append(z.flush())
+    return b"".join(out), crc, size
+
+
+def member(name, content=None, deflate=None, size=None, compressed=None):
+    """A zip member: its stored bytes (content stored, or a deflated() triple) and what its
+    headers declare (the true sizes unless size or compressed say otherwise)."""
+    if deflate is not None:
+        stored, crc, true_size = deflate
+        method = 8
+    else:
+        stored, crc, true_size, method = content, zlib.crc32(content), len(content), 0
+    return {"name": name.encode(), "stored": stored, "method": method, "crc": crc,
+            "size": true_size if size is None else size,
+            "compressed": len(stored) if compressed is None else compressed}
+
+
+def zip_archive(members):
+    out, directory = b"", b""
+    for m in members:
+        fields = struct.pack("<HHHHHIIIHH", 20, 0, m["method"], 0, 0x21, m["crc"],
+                             m["compressed"], m["size"], len(m["name"]), 0)
+        directory += (struct.pack("<IH", 0x02014B50, 20) + fields +
+                      struct.pack("<HHHII", 0, 0, 0, 0, len(out)) + m["name"])
+        out += struct.pack("<I", 0x04034B50) + fields + m["name"] + m["stored"]
+    return out + directory + struct.pack("<IHHHHIIH", 0x06054B50, 0, 0, len(members),
+                                         len(members), len(directory), len(out), 0)
+
+
+XML_START = (b'<?xml version="1.0" encoding="UTF-8"?>\n'
+             b'<p:ISO5436_2 xmlns:p="http://www.opengps.eu/2008/ISO5436_2">\n')
+XML_END = b"</p:ISO5436_2>\n"
+
+
+def main_xml(nx, ny):
+    axis = ("<%s><AxisType>I</AxisType><DataType>D</DataType><Increment>1e-06</Increment>"
+            "<Offset>0</Offset></%s>")
+    return XML_START + (
+        "<Record1><Revision>ISO5436 - 2000</Revision><FeatureType>SUR</FeatureType><Axes>"
+        + axis % ("CX", "CX") + axis % ("CY", "CY") +
+        "<CZ><AxisType>A</AxisType><DataType>D</DataType></CZ></Axes></Record1>\n"
+        "<Record3><MatrixDimension><SizeX>%d</SizeX><SizeY>%d</SizeY><SizeZ>1</SizeZ>"
+        "</MatrixDimension><DataLink><PointDataLink>bindata/data.bin</PointDataLink>"
+        "</DataLink></Record3>\n" % (nx, ny)).encode() + XML_END
+
+
+def x3p(xml, data):
+    return zip_archive([member("main.xml", deflate=deflated([xml])), data])
+
+
+def hostile_seeds():
+    """The hostile files of tests/io/test_hostile_files.cpp, with bombs of 5 MiB (5 kB
+    deflated, beyond the 4 MiB limit of main.xml), so that libFuzzer, which sizes its inputs by
+    the largest seed, keeps them small."""
+    zeros96 = member("bindata/data.bin", b"\0" * 96)
+    bomb = deflated([(b"\0", 5 << 20)], zlib.Z_RLE)
+    xml_bomb = deflated([XML_START, (b" ", 5 << 20), XML_END], zlib.Z_RLE)
+    nested = XML_START + b"<a>" * 100000 + b"</a>" * 100000 + XML_END
+    npy_header = b"{'descr': '<f8', 'fortran_order': False, 'shape': (16384, 16384), }"
+    npy_header += b" " * (117 - len(npy_header)) + b"\n"
+    return {
+        "x3p_reader": {
+            "regression-2to28-points-96-bytes.x3p": x3p(main_xml(16384, 16384), zeros96),
+            "regression-32768-squared-points.x3p": x3p(main_xml(32768, 32768), zeros96),
+            "regression-deflate-cannot-hold.x3p": x3p(
+                main_xml(16384, 16384),
+                member("bindata/data.bin", deflate=(b"\x55" * 20, 0, 20), size=1 << 31)),
+            "regression-bzip2-member.x3p": x3p(
+                main_xml(16384, 16384),
+                dict(member("bindata/data.bin", b"\x55" * 20, size=1 << 31), method=12)),
+            "regression-data-bomb.x3p": x3p(main_xml(4, 3), member("bindata/data.bin",
+                                                                   deflate=bomb)),
+            "regression-data-bomb-declaring-96-bytes.x3p": x3p(
+                main_xml(4, 3), member("bindata/data.bin", deflate=bomb, size=96)),
+            "regression-xml-bomb.x3p": zip_archive([member("main.xml", deflate=xml_bomb),
+                                                    zeros96]),
+            "regression-xml-bomb-declaring-1000-bytes.x3p": zip_archive(
+                [member("main.xml", deflate=xml_bomb, size=1000), zeros96]),
+            "nested_xml.x3p": x3p(nested, zeros96),
+        },
+        "npy_reader": {
+            "regression-2to28-points-in-128-bytes.npy":
+                b"\x93NUMPY\x01\x00" + struct.pack("<H", len(npy_header)) + npy_header,
+        },
+        "text_reader": {
+            "regression-decimal-commas.txt": b"0,5 0,1 0,3\n0,2 0,4 0,6\n",
+            "regression-decimal-commas-semicolons.csv": b"# heights\n-1,25;2,5\n3,75;4,0\n",
+            "regression-decimal-comma-column.txt": b"0,5\n0,25\n-1,5\n",
+            "integers_commas.csv": b"1,2,3\n4,5,6\n",
+        },
+    }
+
+
 def main():
     for name, program in c_api_seeds().items():
         with open(os.path.join(HERE, "corpus", "c_api", name), "wb") as f:
@@ -256,6 +369,10 @@ def main():
     for name, data in arrays.items():
         with open(os.path.join(HERE, "corpus", "npy_reader", name), "wb") as f:
             f.write(data)
+    for driver, files in hostile_seeds().items():
+        for name, data in files.items():
+            with open(os.path.join(HERE, "corpus", driver, name), "wb") as f:
+                f.write(data)
 
 
 if __name__ == "__main__":
