@@ -1,11 +1,14 @@
 /* SPDX-License-Identifier: GPL-2.0-or-later */
-/* Whatever way a solve ends, and whatever the algorithm, its history has one row per
- * iteration from iteration 0, so iterations + 1 rows, the last one with the reported
- * iteration, work counters and final error, every number finite: every algorithm converged,
- * at the iteration limit, cancelled by the progress callback and with a stall window of 2;
- * and "fire" broken down, on a potential whose energy below a gap of -0.1 is so large that the
- * energy of a few pixels there overflows a double (the breakdown once left the history a row
- * short). */
+/* Whatever way a solve ends, and whatever the algorithm, what it leaves adds up:
+ *  - its history has one row per iteration from iteration 0, so iterations + 1 rows, the last
+ *    one with the reported iteration, work counters and final error, every number finite:
+ *    every algorithm converged, at the iteration limit, cancelled by the progress callback and
+ *    with a stall window of 2; and "fire" broken down, on a potential whose energy below a
+ *    gap of -0.1 is so large that the energy of a few pixels there overflows a double (the
+ *    breakdown once left the history a row short);
+ *  - asp_last_error_message() is empty after a solve that returned ASP_OK, also when the
+ *    progress or the potential callback made a call of its own that the library refused (the
+ *    message of that call was once left behind). */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -186,11 +189,85 @@ static void test_fire_breakdown(const Scenes *s) {
   asp_system_destroy(system);
 }
 
+/* Callbacks that call the library about the system being solved: refused, and the solve goes
+ * on. What each refused call said is kept for the checks. */
+typedef struct {
+  asp_system *system;
+  int calls, refused;
+  char message[512];
+} Meddler;
+
+static void meddle(Meddler *m) {
+  double value = 0.0;
+  const int status = asp_system_get(m->system, ASP_MEAN_PRESSURE, &value);
+  ++m->calls;
+  if (status == ASP_ERR_INVALID_STATE) {
+    ++m->refused;
+    strncpy(m->message, asp_last_error_message(), sizeof m->message - 1);
+  }
+}
+
+static int meddling_progress(int64_t iteration, double seconds, double error, void *user_data) {
+  (void)iteration;
+  (void)seconds;
+  (void)error;
+  meddle((Meddler *)user_data);
+  return 0;
+}
+
+static int meddling_wall(int64_t count, const double *gap, double *phi, double *dphi,
+                         double *d2phi, void *user_data) {
+  int64_t i;
+  meddle((Meddler *)user_data);
+  for (i = 0; i < count; ++i) {
+    const double r = 0.05 * exp(-2.0 * gap[i] / 0.3), a = 0.01 * exp(-gap[i] / 0.3);
+    phi[i] = r - a;
+    dphi[i] = -2.0 * r / 0.3 + a / 0.3;
+    if (d2phi != NULL) d2phi[i] = 4.0 * r / 0.09 - a / 0.09;
+  }
+  return 0;
+}
+
+static void test_message_empty_after_success(const Scenes *s) {
+  static Meddler m;
+  asp_solver *solver = NULL;
+  asp_system *system = NULL;
+  int converged = 0;
+  /* The progress callback. */
+  memset(&m, 0, sizeof m);
+  m.system = s->hard;
+  CHECK_OK(asp_solver_create("pk", &solver));
+  CHECK_OK(asp_solver_set_progress(solver, meddling_progress, &m));
+  CHECK_OK(asp_system_reset(s->hard));
+  CHECK(asp_solver_solve(solver, s->hard, ASP_CONTROL_MEAN_PRESSURE, 0.005) == ASP_OK);
+  CHECK(strcmp(asp_last_error_message(), "") == 0);
+  CHECK(m.calls > 0 && m.refused == m.calls && m.message[0] != '\0');
+  CHECK_OK(asp_solver_converged(solver, &converged));
+  CHECK(converged == 1);
+  asp_solver_destroy(solver);
+
+  /* The potential callback. */
+  memset(&m, 0, sizeof m);
+  CHECK_OK(asp_system_create(s->grid, 1.0, &system));
+  CHECK_OK(asp_system_set_topography(system, s->heights, n));
+  m.system = system;
+  CHECK_OK(asp_system_set_potential(system, meddling_wall, &m, 0));
+  CHECK_OK(asp_solver_create("lbfgs", &solver));
+  CHECK(asp_solver_solve(solver, system, ASP_CONTROL_PENETRATION, -0.45) == ASP_OK);
+  CHECK(strcmp(asp_last_error_message(), "") == 0);
+  CHECK(m.calls > 0 && m.refused == m.calls && m.message[0] != '\0');
+  CHECK_OK(asp_solver_converged(solver, &converged));
+  CHECK(converged == 1);
+  asp_solver_destroy(solver);
+  asp_system_destroy(system);
+}
+
 int main(void) {
   static Scenes s;
   make_scenes(&s);
   test_every_algorithm_every_ending(&s);
   test_fire_breakdown(&s);
+  test_message_empty_after_success(&s);
   asp_system_destroy(s.hard);
   asp_system_destroy(s.soft);
   asp_grid_destroy(s.grid);
