@@ -244,7 +244,9 @@ ControlSpec read_control(SceneTable t) {
   if (t.has("value")) {
     s.value = t.real("value");
     s.has_value = true;
+    s.where = where(t.node("value")->source()) + ": " + t.key_name("value");
   } else {
+    s.where = where(t.node("sweep")->source()) + ": " + t.key_name("sweep");
     s.sweep = read_sweep(SceneTable(*t.table("sweep"), t.key_name("sweep")));
     s.has_sweep = true;
   }

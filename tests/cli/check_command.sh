@@ -16,7 +16,8 @@
 #   - threads and FFT planning: bad values refused by every command; the FFTW wisdom file
 #     written to the cache directory and read back, a damaged or foreign one or one that is
 #     not a regular file passed over with a note (same results), --no-wisdom and --wisdom;
-#   - the progress line only on a terminal; Ctrl-C cancels cleanly.
+#   - the progress line only on a terminal; Ctrl-C cancels cleanly;
+#   - defects found from outside: a value refused at solve time gives its reason.
 # Usage: check_command.sh PATH_TO_ASPERITY SOURCE_DIRECTORY WORK_DIRECTORY
 set -u
 cli=$1 source=$2 work=$3
@@ -435,6 +436,17 @@ run info "$small" --output info-scene
 grep -E '^rms (height|slope|curvature)' "$out" > from-scene.txt
 expect "info gives three statistics" [ "$(wc -l < from-scene.txt)" -eq 3 ]
 expect "info of a scene and of its written topography agree" cmp -s from-file.txt from-scene.txt
+
+# ---- defects found from outside -------------------------------------------------------------
+# A value the library refuses only when the solve starts (a load doubles cannot hold in the
+# solve's units): exit 2 with the library's reason, naming control.value (the reason was
+# once lost, read after another call of the library had emptied it).
+for command in run compare; do
+  run $command "$small" --set control.value=1e308 --output huge-load-$command
+  expect "$command: a load refused at solve time exits 2 (got $rc)" [ "$rc" -eq 2 ]
+  expect "$command: the refusal names control.value and gives the reason: $(cat "$err")" \
+    has "control\.value.*: argument 'value' is 1e\+308" "$err"
+done
 
 # ---- terminal and interruption --------------------------------------------------------------
 # script(1) from util-linux runs the command on a pseudo-terminal.
