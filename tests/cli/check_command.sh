@@ -17,7 +17,9 @@
 #     written to the cache directory and read back, a damaged or foreign one or one that is
 #     not a regular file passed over with a note (same results), --no-wisdom and --wisdom;
 #   - the progress line only on a terminal; Ctrl-C cancels cleanly;
-#   - defects found from outside: a value refused at solve time gives its reason.
+#   - defects found from outside: a value refused at solve time gives its reason; sizes and
+#     surfaces the library refuses, or this machine cannot hold, are bad input (exit 2)
+#     naming the key or file.
 # Usage: check_command.sh PATH_TO_ASPERITY SOURCE_DIRECTORY WORK_DIRECTORY
 set -u
 cli=$1 source=$2 work=$3
@@ -447,6 +449,26 @@ for command in run compare; do
   expect "$command: the refusal names control.value and gives the reason: $(cat "$err")" \
     has "control\.value.*: argument 'value' is 1e\+308" "$err"
 done
+
+# Surfaces and grids the library refuses, or that this machine cannot hold: bad input,
+# named (they were exit 3, "out of memory" or a message of the C++ library).
+printf '1e308 -1e308 1\n2 3 4\n5 6 7\n' > huge-heights.txt
+bad "huge-heights.txt" "overflows" info huge-heights.txt
+printf '# Value units: furlong\n1 2 3\n4 5 6\n' > furlong-heights.txt
+bad "furlong-heights.txt" "unknown length unit 'furlong'" info furlong-heights.txt
+printf '# Width: 3 furlong\n1 2 3\n4 5 6\n' > furlong-width.txt
+bad "furlong-width.txt" "unknown length unit 'furlong'" info furlong-width.txt
+sed 's/^path = .*/path = "furlong-heights.txt"/' measured.toml > furlong.toml
+bad "furlong.toml: topography.path" "unknown length unit 'furlong'" run furlong.toml
+printf '5\n' > one-point.txt
+bad "one-point.txt" "one point" info one-point.txt
+printf '1 2 3 4 5 6\n' > six-points.txt
+bad "--bins 7" "more bins than the surface's 6 pixels" info six-points.txt --bins 7
+bad "grid.nx" "machine's memory" run "$small" --set grid.nx=2147483648
+bad "grid.nx" "machine's memory" run "$small" --set grid.nx=3037000500 --set grid.ny=3037000500
+bad "grid.nx" "machine's memory" run --set grid.nx=1000000000
+bad "grid.nx" "2147483648.*(more than FFTW can transform|machine's memory)" \
+  run "$small" --set grid.nx=2147483648 --set grid.ny=1
 
 # ---- terminal and interruption --------------------------------------------------------------
 # script(1) from util-linux runs the command on a pseudo-terminal.
