@@ -19,7 +19,8 @@
 #   - the progress line only on a terminal; Ctrl-C cancels cleanly;
 #   - defects found from outside: a value refused at solve time gives its reason; sizes and
 #     surfaces the library refuses, or this machine cannot hold, are bad input (exit 2)
-#     naming the key or file.
+#     naming the key or file; a symbolic link at an output file's name is replaced, never
+#     written through.
 # Usage: check_command.sh PATH_TO_ASPERITY SOURCE_DIRECTORY WORK_DIRECTORY
 set -u
 cli=$1 source=$2 work=$3
@@ -469,6 +470,26 @@ bad "grid.nx" "machine's memory" run "$small" --set grid.nx=3037000500 --set gri
 bad "grid.nx" "machine's memory" run --set grid.nx=1000000000
 bad "grid.nx" "2147483648.*(more than FFTW can transform|machine's memory)" \
   run "$small" --set grid.nx=2147483648 --set grid.ny=1
+
+# Symbolic links at the names of the output files are replaced, not followed: what they
+# point to is left as it was, or not made.
+mkdir -p linked
+echo precious > precious.txt
+for name in summary.csv pressure.npy pressure.png; do ln -sf "$work/precious.txt" "linked/$name"; done
+ln -sf "$work/made-through-a-link.csv" linked/history.csv
+run run "$small" --output linked
+expect "a run over planted links exits 0 (stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
+expect "the file a link pointed to is unchanged" [ "$(cat precious.txt)" = precious ]
+expect "a dangling link did not make its target" [ ! -e made-through-a-link.csv ]
+expect "summary.csv is a file of its own, with its header" \
+  bash -c '[ ! -L "$1" ] && [ "$(head -n 1 "$1")" = quantity,value,unit ]' _ linked/summary.csv
+expect "history.csv is a file of its own" bash -c '[ -f "$1" ] && [ ! -L "$1" ]' _ linked/history.csv
+expect "pressure.npy is a file of its own" bash -c '[ ! -L "$1" ]' _ linked/pressure.npy
+expect "pressure.npy is a NumPy file" is_npy linked/pressure.npy
+if [ "$have_gnuplot" = yes ]; then
+  expect "pressure.png is a picture of its own" bash -c '[ ! -L "$1" ]' _ linked/pressure.png
+fi
+expect "no temporary file is left in the output directory" [ -z "$(ls -A linked | grep '^\.')" ]
 
 # ---- terminal and interruption --------------------------------------------------------------
 # script(1) from util-linux runs the command on a pseudo-terminal.
