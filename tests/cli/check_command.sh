@@ -20,7 +20,7 @@
 #   - defects found from outside: a value refused at solve time gives its reason; sizes and
 #     surfaces the library refuses, or this machine cannot hold, are bad input (exit 2)
 #     naming the key or file; a symbolic link at an output file's name is replaced, never
-#     written through.
+#     written through; a long, narrow surface is described in moments.
 # Usage: check_command.sh PATH_TO_ASPERITY SOURCE_DIRECTORY WORK_DIRECTORY
 set -u
 cli=$1 source=$2 work=$3
@@ -490,6 +490,21 @@ if [ "$have_gnuplot" = yes ]; then
   expect "pressure.png is a picture of its own" bash -c '[ ! -L "$1" ]' _ linked/pressure.png
 fi
 expect "no temporary file is left in the output directory" [ -z "$(ls -A linked | grep '^\.')" ]
+
+# A long, narrow text surface (2 columns of 200000 rows, and 2 rows of 200000 columns) is
+# described in moments: its transforms are planned at once (planning them once took minutes
+# at ten times the size).
+awk 'BEGIN { srand(1); for (i = 0; i < 200000; ++i) printf "%.6f %.6f\n", rand(), rand() }' > narrow.txt
+awk '{ a = a (NR > 1 ? " " : "") $1; b = b (NR > 1 ? " " : "") $2 } END { print a; print b }' \
+  narrow.txt > wide.txt
+for shape in narrow wide; do
+  started=$SECONDS
+  run info $shape.txt --output info-$shape --no-plots
+  took=$((SECONDS - started))
+  expect "info on a $shape surface of 2 x 200000 points exits 0 (stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
+  expect "info on a $shape surface of 2 x 200000 points takes seconds, not minutes (took $took s)" \
+    [ "$took" -lt 30 ]
+done
 
 # ---- terminal and interruption --------------------------------------------------------------
 # script(1) from util-linux runs the command on a pseudo-terminal.
