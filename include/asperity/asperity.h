@@ -120,8 +120,10 @@ extern "C" {
 ASP_EXPORT const char *asp_status_string(int status);
 
 /* The detail of the last failed call made from this thread: function, argument, value, reason.
- * Empty after a successful call. The pointer stays valid until the next asperity call from
- * the same thread. */
+ * Empty after a call that returned ASP_OK, also when a callback it ran (progress, potential)
+ * made a call of its own that failed: that call's message is there to read inside the
+ * callback, right after it. The pointer stays valid until the next asperity call from the
+ * same thread. */
 ASP_EXPORT const char *asp_last_error_message(void);
 
 /* The library's version, e.g. "0.2.0"; compare with ASP_VERSION_STRING to detect a header and

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // The exception firewall of the C API: every entry point runs its body through guarded(),
 // which turns any C++ exception into a status code and a thread-local message naming the
-// function. Nothing escapes into C.
+// function. Nothing escapes into C. A call that succeeds leaves the message empty, also when
+// its body called back into the user's code and a call made there failed.
 #pragma once
 
 #include <cstdint>
@@ -26,6 +27,9 @@ int guarded(const char *function, Body &&body) noexcept {
   try {
     clear_last_error();
     body();
+    // A callback run by the body (a progress or potential callback) may have made a call of
+    // its own that failed and left its message.
+    clear_last_error();
     return ASP_OK;
   } catch (const Error &e) {
     return record_error(static_cast<int>(e.status()), function, e.what());

@@ -83,14 +83,16 @@ double relative_difference(const std::vector<double> &p, const std::vector<doubl
 // One untimed iteration of the solver, so that the FFT plans and the tables made on a first
 // solve (stiffness, compliance) exist before its timed solve: otherwise the first solver's
 // time would include what the others then reuse.
-void warm_up(asp_solver *solver, Contact &contact, int control, double value) {
+// A value the solve refuses is refused here, naming `where`.
+void warm_up(asp_solver *solver, Contact &contact, int control, double value,
+             const std::string &where) {
   double max_iterations = 0.0;
   check(asp_solver_get_option(solver, "max_iterations", &max_iterations), "reading an option");
   check(asp_solver_set_option(solver, "max_iterations", 1.0), "setting an option");
   check(asp_system_reset(contact.system.get()), "resetting the system");
-  const int status = asp_solver_solve(solver, contact.system.get(), control, value);
+  // The refusal's message is read before the next call empties it.
+  check_given(asp_solver_solve(solver, contact.system.get(), control, value), where);
   check(asp_solver_set_option(solver, "max_iterations", max_iterations), "setting an option");
-  check(status, "the untimed first iteration");
 }
 
 // What a solver's timed solves gave: the report and pressure field of the fastest, how many
@@ -217,10 +219,10 @@ int compare_command(const std::vector<std::string> &arguments) {
   std::string reference_name;
   for (Entry &e : entries) {
     if (InterruptGuard::interrupted()) break;
-    warm_up(e.solver.get(), contact, control, scene.control.value);
+    const std::string where = scene.control.where + " (" + e.algorithm + ")";
+    warm_up(e.solver.get(), contact, control, scene.control.value, where);
     progress.set_label(e.algorithm);
-    Timing t = timed_solves(e, contact, control, scene.control.value, repeats, progress,
-                            scene.source + ": compare.solvers: " + e.algorithm);
+    Timing t = timed_solves(e, contact, control, scene.control.value, repeats, progress, where);
     const SolveReport &r = t.report;
     std::string versus = "-";
     if (!reference.empty()) {

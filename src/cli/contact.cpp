@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
+#include <utility>
 
 #include "io/height_map.hpp"
 
@@ -32,10 +34,15 @@ Surface generated_surface(const Scene &scene, const ComputeOptions &compute) {
   s.lx = g.lx;
   s.ly = g.one_dimensional ? g.lx : g.ly;
   s.unit = g.unit;
-  s.heights.assign(static_cast<size_t>(s.nx * s.ny), 0.0);
-  Grid grid = make_grid(s, compute);
-  const int64_t n = s.nx * s.ny;
+  s.grid_where = scene.source + ": grid.nx = " + std::to_string(g.nx) +
+                 (g.one_dimensional ? "" : ", grid.ny = " + std::to_string(g.ny));
   const std::string where = scene.source + ": [topography]";
+  s.heights_where = where;
+  // The grid first: the library refuses sizes it cannot transform before the heights are
+  // made (the scene's reader refused those that do not fit this machine's memory).
+  Grid grid = make_grid(s, compute);
+  s.heights.assign(static_cast<size_t>(s.nx * s.ny), 0.0);
+  const int64_t n = s.nx * s.ny;
   std::ostringstream what;
   what << s.nx;
   if (!s.one_dimensional) what << " x " << s.ny;
@@ -106,6 +113,22 @@ Surface measured_surface(const Scene &scene) {
   s.nx = map.nx;
   s.ny = map.ny;
   s.one_dimensional = map.ny == 1;
+  s.grid_where = where + ": " + t.path;
+  s.heights_where = where + ": " + t.path;
+  if (map.nx * map.ny < 2)
+    throw usage_error(where + ": " + t.path +
+                      " has one point: a surface needs at least 2 (a profile, or rows of them)");
+  // The units the file gives must be known ones: the conversions below take them as such.
+  for (const auto &[unit, what] : {std::pair<const std::string &, const char *>{
+                                       map.height_unit, "heights"},
+                                   {map.length_unit, "lengths"}}) {
+    if (unit.empty()) continue;
+    try {
+      metres(unit);
+    } catch (const std::invalid_argument &e) {
+      throw usage_error(where + ": " + t.path + " gives its " + what + " in an " + e.what());
+    }
+  }
   if (g.nx != 0 && g.nx != map.nx)
     throw usage_error(scene.source + ": grid.nx: is " + std::to_string(g.nx) + ", but " +
                       t.path + " has " + std::to_string(map.nx) + " points along x");
@@ -201,7 +224,7 @@ Grid make_grid(const Surface &s, const ComputeOptions &compute) {
   asp_grid *grid = nullptr;
   const int status = s.one_dimensional ? asp_grid_create_1d(s.nx, s.lx, &grid)
                                        : asp_grid_create_2d(s.nx, s.ny, s.lx, s.ly, &grid);
-  check_given(status, "the grid");
+  check_given(status, s.grid_where);
   Grid owned(grid);
   // The plans are made at the first transform, with the threads and planning set by then.
   if (compute.threads > 0)

@@ -24,6 +24,10 @@ struct Surface {
   std::vector<double> heights;  // x fastest
   std::string description;      // one line: what the surface is and where it came from
   std::vector<std::string> notes;  // what was assumed or changed on the way (units, filling)
+  // What a message about the grid or the heights names: "scene.toml: grid.nx = 64, grid.ny =
+  // 64" for a generated surface, the file for a measured one.
+  std::string grid_where;
+  std::string heights_where;
 };
 
 // How every grid of a command computes, from its command line (--threads, --planning), and
@@ -37,7 +41,8 @@ struct ComputeOptions {
 };
 
 // The scene's grid, as the library makes it, with the threads and FFT planning of `compute`
-// set before anything transforms on it.
+// set before anything transforms on it. A grid the library refuses is a bad scene, named by
+// surface.grid_where.
 Grid make_grid(const Surface &surface, const ComputeOptions &compute);
 
 // The surface a scene describes: generated or read from its file, converted to the scene's

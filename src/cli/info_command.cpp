@@ -154,15 +154,26 @@ int info_command(const std::vector<std::string> &arguments) {
   }
   read_wisdom(compute);
   const Surface s = make_surface(scene, compute);
+  const int64_t n = static_cast<int64_t>(s.heights.size());
+  if (bins > n)
+    throw usage_error("--bins " + std::to_string(bins) + ": more bins than the surface's " +
+                      std::to_string(n) + " pixels");
+
+  // Everything the library computes comes before any output: heights it refuses (a range or
+  // a spectrum that overflows) are a bad surface, refused before the directory is made.
+  Grid grid = make_grid(s, compute);
+  double rms_height = 0.0, rms_slope = 0.0, rms_curvature = 0.0;
+  check_given(asp_topography_statistics(grid.get(), s.heights.data(), n, &rms_height,
+                                        &rms_slope, &rms_curvature),
+              s.heights_where);
+  if (bins == 0) bins = std::min(n, std::max<int64_t>(2, std::max(s.nx, s.ny) / 2));
+  std::vector<double> q(static_cast<size_t>(bins)), c(static_cast<size_t>(bins));
+  check_given(
+      asp_topography_power_spectrum(grid.get(), s.heights.data(), n, bins, q.data(), c.data()),
+      s.heights_where);
   const std::string directory =
       prepare_directory(output.empty() ? stem(path) + "-info" : output, "--output");
 
-  Grid grid = make_grid(s, compute);
-  const int64_t n = static_cast<int64_t>(s.heights.size());
-  double rms_height = 0.0, rms_slope = 0.0, rms_curvature = 0.0;
-  check(asp_topography_statistics(grid.get(), s.heights.data(), n, &rms_height, &rms_slope,
-                                  &rms_curvature),
-        "computing the statistics");
   const auto [lowest, highest] = std::minmax_element(s.heights.begin(), s.heights.end());
   double mean = 0.0;
   for (double h : s.heights) mean += h;
@@ -179,10 +190,6 @@ int info_command(const std::vector<std::string> &arguments) {
   std::printf("rms slope         %.6g\n", rms_slope);
   std::printf("rms curvature     %.6g 1/%s\n", rms_curvature, u);
 
-  if (bins == 0) bins = std::max<int64_t>(2, std::max(s.nx, s.ny) / 2);
-  std::vector<double> q(static_cast<size_t>(bins)), c(static_cast<size_t>(bins));
-  check(asp_topography_power_spectrum(grid.get(), s.heights.data(), n, bins, q.data(), c.data()),
-        "computing the power spectrum");
   const std::string length = s.unit.empty() ? "pixel" : s.unit;
   const std::string c_unit = length + (s.one_dimensional ? "^3" : "^4");
   CsvTable table({column("q", "1/" + length), column("C", c_unit)});

@@ -15,6 +15,34 @@ namespace cli {
 // that cannot be made is a bad argument found before the solve. Throws usage_error.
 std::string prepare_directory(const std::string &directory, const std::string &where);
 
+// A file of the output directory, written under a fresh name beside its own (".NAME.XXXXXX",
+// created anew: an existing name, a symbolic link included, is never opened) and renamed onto
+// its name once complete. Whatever was at the name (an older output, a symbolic link planted
+// there) is replaced, never followed or written through. Unless committed, the fresh file is
+// removed when the object goes.
+class OutputFile {
+ public:
+  explicit OutputFile(std::string path);  // throws failure naming path
+  ~OutputFile();
+  OutputFile(const OutputFile &) = delete;
+  OutputFile &operator=(const OutputFile &) = delete;
+
+  const std::string &path() const { return path_; }
+  // The fresh file's name, for a writer that takes a name (the .npy writer, gnuplot): no one
+  // but a user who may replace any file of the directory can put something else there.
+  const std::string &fresh() const { return fresh_; }
+  // Appends bytes to the fresh file; throws failure naming path.
+  void write(const std::string &bytes);
+  // Renames the fresh file onto path; throws failure naming path.
+  void commit();
+
+ private:
+  std::string path_;
+  std::string fresh_;
+  int descriptor_ = -1;
+  bool committed_ = false;
+};
+
 // A CSV table: the header's names, then rows of cells (numbers written with %.17g).
 class CsvTable {
  public:

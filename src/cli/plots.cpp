@@ -3,11 +3,13 @@
 
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
 
 #include <unistd.h>
+
+#include "outputs.hpp"
 
 namespace cli {
 namespace {
@@ -59,31 +61,27 @@ Plotter::Plotter() {
 
 std::string Plotter::run(const std::string &png, const std::string &script) const {
   if (program_.empty()) return "skipped " + png + ": " + missing_;
-  const std::string script_path = png + ".gnuplot";
-  const std::string errors_path = png + ".errors";
-  {
-    std::ofstream file(script_path);
-    file << "set terminal pngcairo size 900,700 noenhanced\n"
-         << "set output " << literal(png) << "\n"
-         << script;
-    if (!file) return "skipped " + png + ": cannot write " + script_path;
+  // gnuplot writes the picture to a fresh file of the directory, which then replaces the
+  // PNG's name (a symbolic link there is replaced, not written through); its script and
+  // messages are fresh files too, removed at the end.
+  try {
+    OutputFile picture(png), script_file(png + ".gnuplot"), errors(png + ".errors");
+    script_file.write("set terminal pngcairo size 900,700 noenhanced\nset output " +
+                      literal(picture.fresh()) + "\n" + script);
+    const std::string command = quoted(program_) + " " + quoted(script_file.fresh()) + " 2> " +
+                                quoted(errors.fresh());
+    if (std::system(command.c_str()) != 0) {
+      std::ifstream messages(errors.fresh());
+      std::string first;
+      std::getline(messages, first);
+      unlink(png.c_str());  // no picture of an earlier run is left to be taken for this one's
+      return "skipped " + png + ": gnuplot failed" + (first.empty() ? "" : ": " + first);
+    }
+    picture.commit();
+  } catch (const CommandError &e) {
+    return "skipped " + png + ": " + e.what();
   }
-  const std::string command =
-      quoted(program_) + " " + quoted(script_path) + " 2> " + quoted(errors_path);
-  const int status = std::system(command.c_str());
-  std::string note;
-  if (status != 0) {
-    std::ifstream errors(errors_path);
-    std::string first;
-    std::getline(errors, first);
-    note = "skipped " + png + ": gnuplot failed" + (first.empty() ? "" : ": " + first);
-    std::error_code ignored;
-    std::filesystem::remove(png, ignored);
-  }
-  std::error_code ignored;
-  std::filesystem::remove(script_path, ignored);
-  std::filesystem::remove(errors_path, ignored);
-  return note;
+  return "";
 }
 
 std::string Plotter::lines(const std::string &png, const LinePlot &plot) const {
@@ -133,13 +131,15 @@ std::string Plotter::map(const std::string &png, const std::vector<double> &valu
     plot.series.push_back(std::move(s));
     return lines(png, plot);
   }
-  // The values as raw doubles, x fastest, read by gnuplot's binary array format.
-  const std::string data = png + ".bin";
-  {
-    std::ofstream file(data, std::ios::binary);
-    file.write(reinterpret_cast<const char *>(values.data()),
-               static_cast<std::streamsize>(values.size() * sizeof(double)));
-    if (!file) return "skipped " + png + ": cannot write " + data;
+  // The values as raw doubles, x fastest, read by gnuplot's binary array format from a fresh
+  // file, removed at the end.
+  std::unique_ptr<OutputFile> data;
+  try {
+    data = std::make_unique<OutputFile>(png + ".bin");
+    data->write(std::string(reinterpret_cast<const char *>(values.data()),
+                            values.size() * sizeof(double)));
+  } catch (const CommandError &e) {
+    return "skipped " + png + ": " + e.what();
   }
   std::ostringstream script;
   script.precision(17);
@@ -149,13 +149,10 @@ std::string Plotter::map(const std::string &png, const std::vector<double> &valu
          << "\nset cblabel " << literal(label) << "\n"
          << "set size ratio -1\nset palette rgb 33,13,10\n"
          << "set xrange [0:" << lx << "]\nset yrange [0:" << ly << "]\n"
-         << "plot " << literal(data) << " binary array=(" << nx << "," << ny
+         << "plot " << literal(data->fresh()) << " binary array=(" << nx << "," << ny
          << ") format='%float64' dx=" << dx << " dy=" << dy << " origin=(" << dx / 2 << ","
          << dy / 2 << ") with image notitle\n";
-  const std::string note = run(png, script.str());
-  std::error_code ignored;
-  std::filesystem::remove(data, ignored);
-  return note;
+  return run(png, script.str());
 }
 
 }  // namespace cli

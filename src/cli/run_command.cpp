@@ -83,7 +83,7 @@ int run_command(const std::vector<std::string> &arguments) {
   ProgressLine progress(stderr);
   const SolveReport report =
       solve(session.solver.get(), scene.solver.algorithm, contact, scene.control.control,
-            scene.control.value, progress, scene.output.history, scene.solver.where);
+            scene.control.value, progress, scene.output.history, scene.control.where);
   print_solve(stdout, report, contact.surface);
   write_wisdom(session.compute);
 

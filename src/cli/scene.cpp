@@ -6,6 +6,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <unistd.h>
+
 #include <toml++/toml.h>
 
 #include "asperity/asperity.h"
@@ -92,6 +94,39 @@ std::string length_unit(SceneTable &t, const std::string &key) {
   return unit;
 }
 
+// The memory of this machine in bytes (0 when the system does not say).
+double machine_memory() {
+  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
+  return pages > 0 && page > 0 ? static_cast<double>(pages) * static_cast<double>(page) : 0.0;
+}
+
+// "1.1e+12 bytes" as "1.1 TB".
+std::string bytes_text(double bytes) {
+  const char *const units[] = {"bytes", "kB", "MB", "GB", "TB", "PB", "EB", "ZB", "YB"};
+  int k = 0;
+  while (bytes >= 1000.0 && k < 8) bytes /= 1000.0, ++k;
+  std::ostringstream text;
+  text.precision(3);
+  text << bytes << " " << units[k];
+  return text.str();
+}
+
+// A grid whose heights alone (one double a pixel; a solve holds several such arrays) would
+// not fit this machine's memory is refused at its larger side, as the scene's mistake it
+// is, before anything is allocated.
+void check_grid_fits(SceneTable &t, const GridSpec &grid) {
+  const double pixels = static_cast<double>(grid.nx) * static_cast<double>(grid.ny);
+  const double bytes = pixels * sizeof(double), memory = machine_memory();
+  if (!(memory > 0.0) || bytes <= memory) return;
+  const bool along_x = grid.nx >= grid.ny;
+  std::ostringstream problem;
+  problem.precision(3);
+  if (grid.ny > 1) problem << grid.nx << " x " << grid.ny << " = ";
+  problem << pixels << " pixels, whose heights alone need " << bytes_text(bytes)
+          << ", more than this machine's memory (" << bytes_text(memory) << ")";
+  t.refuse(along_x ? "nx" : "ny", problem.str());
+}
+
 GridSpec read_grid(SceneTable t, bool from_file) {
   GridSpec grid;
   grid.unit = length_unit(t, "unit");
@@ -110,6 +145,7 @@ GridSpec read_grid(SceneTable t, bool from_file) {
       t.refuse("ly", "a one-dimensional grid (ny = 1) has no ly");
     grid.ly = t.positive("ly", grid.lx * static_cast<double>(grid.ny) /
                                    static_cast<double>(grid.nx));
+    check_grid_fits(t, grid);
   }
   t.finish();
   return grid;
@@ -244,7 +280,9 @@ ControlSpec read_control(SceneTable t) {
   if (t.has("value")) {
     s.value = t.real("value");
     s.has_value = true;
+    s.where = where(t.node("value")->source()) + ": " + t.key_name("value");
   } else {
+    s.where = where(t.node("sweep")->source()) + ": " + t.key_name("sweep");
     s.sweep = read_sweep(SceneTable(*t.table("sweep"), t.key_name("sweep")));
     s.has_sweep = true;
   }

@@ -81,6 +81,9 @@ struct ControlSpec {
   bool has_value = false;
   SweepSpec sweep;
   bool has_sweep = false;
+  // Where the value or the sweep was given ("scene.toml:24:9: control.value"), for a value
+  // the solve refuses.
+  std::string where;
 };
 
 // A solver option as the scene gives it: a number or a text.

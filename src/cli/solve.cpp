@@ -41,11 +41,16 @@ SolveReport solve(asp_solver *solver, const std::string &algorithm, Contact &con
   check(asp_solver_set_history(solver, record_history ? 1 : 0), "turning the history on");
   check(asp_solver_set_progress(solver, ProgressLine::callback, &progress),
         "setting the progress callback");
+  // The callback is removed however the solve ends, and only after a refusal's message has
+  // been read into the error thrown (the removal is a call of its own and empties it).
+  struct ProgressRemoval {
+    asp_solver *solver;
+    ~ProgressRemoval() { asp_solver_set_progress(solver, nullptr, nullptr); }
+  } removal{solver};
   const double cpu_start = process_cpu_seconds();
   const int status = asp_solver_solve(solver, system, control, value);
   const double cpu_seconds = process_cpu_seconds() - cpu_start;
   progress.clear();
-  asp_solver_set_progress(solver, nullptr, nullptr);
   check_given(status, where);
 
   SolveReport r;

@@ -72,7 +72,8 @@ int run_sweep(Session &session) {
     const bool unloading = k >= loading;
     progress.set_label("step " + std::to_string(k) + "/" + std::to_string(values.size() - 1));
     const SolveReport r = solve(session.solver.get(), scene.solver.algorithm, contact, control,
-                                values[k], progress, false, scene.solver.where);
+                                values[k], progress, false,
+                                scene.control.where + ": step " + std::to_string(k));
     all_converged = all_converged && r.converged();
     std::printf("%5zu %-9s %14.6g %14.6g %14.6g %14.6f %10lld %6.2f  %s\n", k,
                 unloading ? "unloading" : "loading", r.penetration, r.mean_pressure, r.mean_gap,

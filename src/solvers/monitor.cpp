@@ -23,6 +23,13 @@ double Monitor::seconds() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
 
+void Monitor::record(std::int64_t iteration, const IterationState &state, double elapsed,
+                     double error, double objective, double contact_fraction) {
+  history_.push_back({static_cast<double>(iteration), static_cast<double>(state.evaluations),
+                      static_cast<double>(state.transforms), elapsed, error, objective,
+                      contact_fraction});
+}
+
 bool Monitor::should_stop(std::int64_t iteration, const IterationState &state) {
   iterations_ = iteration;
   evaluations_ = state.evaluations;
@@ -32,6 +39,16 @@ bool Monitor::should_stop(std::int64_t iteration, const IterationState &state) {
   if (!std::isfinite(state.error) || state.error < 0.0 ||
       (settings_.record_history && !std::isfinite(state.objective))) {
     termination_ = Termination::breakdown;
+    // The iteration that broke down is counted, so it has its row, with its work and time;
+    // its error, objective and contact fraction are not numbers to show, and the row repeats
+    // those of the last finite state (the error the report gives), or DBL_MAX, 0 and 0 when
+    // the starting point broke down. Every number of a history is finite.
+    if (settings_.record_history) {
+      const bool earlier = !history_.empty();
+      record(iteration, state, seconds(), error_,
+             earlier ? history_.back()[static_cast<int>(HistoryColumn::objective)] : 0.0,
+             earlier ? history_.back()[static_cast<int>(HistoryColumn::contact_fraction)] : 0.0);
+    }
     return true;
   }
   error_ = state.error;
@@ -39,9 +56,7 @@ bool Monitor::should_stop(std::int64_t iteration, const IterationState &state) {
   const bool timed = settings_.record_history || settings_.progress != nullptr;
   const double elapsed = timed ? seconds() : 0.0;
   if (settings_.record_history)
-    history_.push_back({static_cast<double>(iteration), static_cast<double>(state.evaluations),
-                        static_cast<double>(state.transforms), elapsed, state.error,
-                        state.objective, state.contact_fraction});
+    record(iteration, state, elapsed, state.error, state.objective, state.contact_fraction);
   bool cancel = settings_.progress != nullptr &&
                 settings_.progress(iteration, elapsed, state.error, settings_.progress_data) != 0;
   if (settings_.reductions != nullptr) {

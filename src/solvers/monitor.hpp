@@ -67,7 +67,9 @@ class Monitor {
   double tolerance() const { return settings_.tolerance; }
 
   // Iteration `iteration` (0: the starting point) has reached `state`. Returns true when the
-  // solve must stop now; termination() then says why.
+  // solve must stop now; termination() then says why. With the history on, every iteration
+  // asked about has its row, the one that breaks down included, so that a history has
+  // iterations() + 1 rows however the solve ends.
   bool should_stop(std::int64_t iteration, const IterationState &state);
 
   // The solver found a non-finite value the monitor could not see (e.g. in physical units).
@@ -86,6 +88,9 @@ class Monitor {
   History &history() { return history_; }
 
  private:
+  void record(std::int64_t iteration, const IterationState &state, double elapsed, double error,
+              double objective, double contact_fraction);
+
   MonitorSettings settings_;
   std::chrono::steady_clock::time_point start_;
   Termination termination_ = Termination::iteration_limit;

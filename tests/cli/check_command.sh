@@ -16,7 +16,11 @@
 #   - threads and FFT planning: bad values refused by every command; the FFTW wisdom file
 #     written to the cache directory and read back, a damaged or foreign one or one that is
 #     not a regular file passed over with a note (same results), --no-wisdom and --wisdom;
-#   - the progress line only on a terminal; Ctrl-C cancels cleanly.
+#   - the progress line only on a terminal; Ctrl-C cancels cleanly;
+#   - defects found from outside: a value refused at solve time gives its reason; sizes and
+#     surfaces the library refuses, or this machine cannot hold, are bad input (exit 2)
+#     naming the key or file; a symbolic link at an output file's name is replaced, never
+#     written through; a long, narrow surface is described in moments.
 # Usage: check_command.sh PATH_TO_ASPERITY SOURCE_DIRECTORY WORK_DIRECTORY
 set -u
 cli=$1 source=$2 work=$3
@@ -435,6 +439,72 @@ run info "$small" --output info-scene
 grep -E '^rms (height|slope|curvature)' "$out" > from-scene.txt
 expect "info gives three statistics" [ "$(wc -l < from-scene.txt)" -eq 3 ]
 expect "info of a scene and of its written topography agree" cmp -s from-file.txt from-scene.txt
+
+# ---- defects found from outside -------------------------------------------------------------
+# A value the library refuses only when the solve starts (a load doubles cannot hold in the
+# solve's units): exit 2 with the library's reason, naming control.value (the reason was
+# once lost, read after another call of the library had emptied it).
+for command in run compare; do
+  run $command "$small" --set control.value=1e308 --output huge-load-$command
+  expect "$command: a load refused at solve time exits 2 (got $rc)" [ "$rc" -eq 2 ]
+  expect "$command: the refusal names control.value and gives the reason: $(cat "$err")" \
+    has "control\.value.*: argument 'value' is 1e\+308" "$err"
+done
+
+# Surfaces and grids the library refuses, or that this machine cannot hold: bad input,
+# named (they were exit 3, "out of memory" or a message of the C++ library).
+printf '1e308 -1e308 1\n2 3 4\n5 6 7\n' > huge-heights.txt
+bad "huge-heights.txt" "overflows" info huge-heights.txt
+printf '# Value units: furlong\n1 2 3\n4 5 6\n' > furlong-heights.txt
+bad "furlong-heights.txt" "unknown length unit 'furlong'" info furlong-heights.txt
+printf '# Width: 3 furlong\n1 2 3\n4 5 6\n' > furlong-width.txt
+bad "furlong-width.txt" "unknown length unit 'furlong'" info furlong-width.txt
+sed 's/^path = .*/path = "furlong-heights.txt"/' measured.toml > furlong.toml
+bad "furlong.toml: topography.path" "unknown length unit 'furlong'" run furlong.toml
+printf '5\n' > one-point.txt
+bad "one-point.txt" "one point" info one-point.txt
+printf '1 2 3 4 5 6\n' > six-points.txt
+bad "--bins 7" "more bins than the surface's 6 pixels" info six-points.txt --bins 7
+bad "grid.nx" "machine's memory" run "$small" --set grid.nx=2147483648
+bad "grid.nx" "machine's memory" run "$small" --set grid.nx=3037000500 --set grid.ny=3037000500
+bad "grid.nx" "machine's memory" run --set grid.nx=1000000000
+bad "grid.nx" "2147483648.*(more than FFTW can transform|machine's memory)" \
+  run "$small" --set grid.nx=2147483648 --set grid.ny=1
+
+# Symbolic links at the names of the output files are replaced, not followed: what they
+# point to is left as it was, or not made.
+mkdir -p linked
+echo precious > precious.txt
+for name in summary.csv pressure.npy pressure.png; do ln -sf "$work/precious.txt" "linked/$name"; done
+ln -sf "$work/made-through-a-link.csv" linked/history.csv
+run run "$small" --output linked
+expect "a run over planted links exits 0 (stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
+expect "the file a link pointed to is unchanged" [ "$(cat precious.txt)" = precious ]
+expect "a dangling link did not make its target" [ ! -e made-through-a-link.csv ]
+expect "summary.csv is a file of its own, with its header" \
+  bash -c '[ ! -L "$1" ] && [ "$(head -n 1 "$1")" = quantity,value,unit ]' _ linked/summary.csv
+expect "history.csv is a file of its own" bash -c '[ -f "$1" ] && [ ! -L "$1" ]' _ linked/history.csv
+expect "pressure.npy is a file of its own" bash -c '[ ! -L "$1" ]' _ linked/pressure.npy
+expect "pressure.npy is a NumPy file" is_npy linked/pressure.npy
+if [ "$have_gnuplot" = yes ]; then
+  expect "pressure.png is a picture of its own" bash -c '[ ! -L "$1" ]' _ linked/pressure.png
+fi
+expect "no temporary file is left in the output directory" [ -z "$(ls -A linked | grep '^\.')" ]
+
+# A long, narrow text surface (2 columns of 200000 rows, and 2 rows of 200000 columns) is
+# described in moments: its transforms are planned at once (planning them once took minutes
+# at ten times the size).
+awk 'BEGIN { srand(1); for (i = 0; i < 200000; ++i) printf "%.6f %.6f\n", rand(), rand() }' > narrow.txt
+awk '{ a = a (NR > 1 ? " " : "") $1; b = b (NR > 1 ? " " : "") $2 } END { print a; print b }' \
+  narrow.txt > wide.txt
+for shape in narrow wide; do
+  started=$SECONDS
+  run info $shape.txt --output info-$shape --no-plots
+  took=$((SECONDS - started))
+  expect "info on a $shape surface of 2 x 200000 points exits 0 (stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
+  expect "info on a $shape surface of 2 x 200000 points takes seconds, not minutes (took $took s)" \
+    [ "$took" -lt 30 ]
+done
 
 # ---- terminal and interruption --------------------------------------------------------------
 # script(1) from util-linux runs the command on a pseudo-terminal.

@@ -79,6 +79,57 @@ TEST(Monitor, BreakdownOnANonFiniteErrorKeepsTheLastFiniteOne) {
   EXPECT_EQ(at_start.error(), DBL_MAX);
 }
 
+// The iteration that breaks down counts, so it has its history row: iterations + 1 rows
+// however a solve ends. Its counters and time are its own; its error, objective and contact
+// fraction, not numbers, are those of the last finite state (the error the report gives),
+// or DBL_MAX, 0 and 0 when the starting point broke down.
+TEST(Monitor, TheIterationThatBreaksDownHasItsHistoryRow) {
+  using C = asp::HistoryColumn;
+  asp::MonitorSettings settings;
+  settings.record_history = true;
+  asp::Monitor monitor(settings);
+  asp::IterationState start = at_error(0.5);
+  start.objective = -2.0;
+  start.contact_fraction = 0.25;
+  start.evaluations = 1;
+  start.transforms = 2;
+  EXPECT_FALSE(monitor.should_stop(0, start));
+  asp::IterationState broken = at_error(NAN);
+  broken.objective = INFINITY;
+  broken.contact_fraction = NAN;
+  broken.evaluations = 3;
+  broken.transforms = 6;
+  EXPECT_TRUE(monitor.should_stop(1, broken));
+  EXPECT_EQ(monitor.termination(), asp::Termination::breakdown);
+  ASSERT_EQ(static_cast<std::int64_t>(monitor.history().size()), monitor.iterations() + 1);
+  const auto &row = monitor.history().back();
+  EXPECT_EQ(row[static_cast<int>(C::iteration)], 1.0);
+  EXPECT_EQ(row[static_cast<int>(C::evaluations)], 3.0);
+  EXPECT_EQ(row[static_cast<int>(C::transforms)], 6.0);
+  EXPECT_GE(row[static_cast<int>(C::seconds)], monitor.history()[0][static_cast<int>(C::seconds)]);
+  EXPECT_EQ(row[static_cast<int>(C::error)], monitor.error());
+  EXPECT_EQ(row[static_cast<int>(C::error)], 0.5);
+  EXPECT_EQ(row[static_cast<int>(C::objective)], -2.0);
+  EXPECT_EQ(row[static_cast<int>(C::contact_fraction)], 0.25);
+  // A finite error with an objective that is not finite breaks down the same way.
+  asp::Monitor objective(settings);
+  EXPECT_FALSE(objective.should_stop(0, start));
+  asp::IterationState no_objective = at_error(0.25);
+  no_objective.objective = NAN;
+  EXPECT_TRUE(objective.should_stop(1, no_objective));
+  EXPECT_EQ(objective.history().size(), 2u);
+
+  asp::Monitor at_start(settings);
+  EXPECT_TRUE(at_start.should_stop(0, broken));
+  ASSERT_EQ(at_start.history().size(), 1u);
+  const auto &first = at_start.history()[0];
+  EXPECT_EQ(first[static_cast<int>(C::iteration)], 0.0);
+  EXPECT_EQ(first[static_cast<int>(C::evaluations)], 3.0);
+  EXPECT_EQ(first[static_cast<int>(C::error)], DBL_MAX);
+  EXPECT_EQ(first[static_cast<int>(C::objective)], 0.0);
+  EXPECT_EQ(first[static_cast<int>(C::contact_fraction)], 0.0);
+}
+
 int cancel_at_three(std::int64_t iteration, double, double, void *calls) {
   ++*static_cast<int *>(calls);
   return iteration == 3 ? 1 : 0;
@@ -163,6 +214,26 @@ TEST(Options, DefaultsRangesAndTypes) {
 }
 
 // ---- whole solves through the monitor -----------------------------------------------------
+
+// A whole solve of "fire" that breaks down at its starting point (a corrupted warm start):
+// its history has its one row, as the report counts iteration 0.
+TEST(Solve, FireBreakingDownAtTheStartHasTheRowOfItsIteration) {
+  auto grid = asp_test::grid_2d(32, 32, 32.0, 32.0);
+  asp::System system(grid, 1.0);
+  const std::vector<double> h = rough_surface(*grid, 5, 0.1, 0.5, 2.0);
+  system.set_topography(h.data());
+  system.set_soft_wall(0.05, 0.3, 0.01, 0.3);
+  system.state().gap[5] = NAN;
+  system.state().pressure[5] = NAN;
+  asp::Solver solver("fire");
+  solver.set_history(true);
+  solver.solve(system, asp::Control::penetration, -0.45);
+  EXPECT_EQ(solver.report().termination, asp::Termination::breakdown);
+  ASSERT_EQ(static_cast<std::int64_t>(solver.history().size()), solver.report().iterations + 1);
+  for (double v : solver.history().back()) EXPECT_TRUE(std::isfinite(v));
+  EXPECT_EQ(solver.history().back()[static_cast<int>(asp::HistoryColumn::error)],
+            solver.report().error);
+}
 
 TEST(Solve, BreakdownResetsTheStateAndSaysSo) {
   auto grid = asp_test::grid_2d(32, 32, 1.0, 1.0);
