@@ -106,6 +106,7 @@ class System {
   // A pbar^2/(2 K~(0)) on a periodic substrate; 0 on a free one, whose elastic energy is
   // whole.
   double mean_mode_energy() const;
+  // The displacement u = K^-1 p of the state's pressure (two transforms), into out.
   void displacement(double *out) const;
 
  private:
