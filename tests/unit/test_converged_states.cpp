@@ -10,7 +10,8 @@
 //
 // The scenes are the defects a checker of converged states found: under mean-pressure control
 // the penetration far exceeds the heights (a soft wall whose range dwarfs the box, a potential
-// that carries the load far from contact).
+// that carries the load far from contact), and a constrained solve that stops at its starting
+// point.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -30,8 +31,12 @@ namespace {
 struct Check {
   double balance = 0.0;      // max |p + phi'(g)| / P over the pixels (soft potentials)
   double consistency = 0.0;  // max |g stored - g recomputed| over the gap's scale
+  double inconsistency = 0.0;  // the same, not divided
+  double scale = 0.0;          // the gap's scale: height range, |delta|, max |u|
   double returned = 0.0;  // max |K u - p| / P, u the displacement field the system returns
   double mean_pressure = 0.0;
+  double mean_gap = 0.0;
+  double mean_displacement = 0.0;  // of the recomputed displacement
 };
 
 // The displacement the stored pressure makes, u = K^-1 p (the q = 0 mode through K~(0)).
@@ -74,9 +79,11 @@ Check check_state(const System &system) {
     g[i] = u[i] - system.heights()[i] + top - s.penetration;
     scale = std::max(scale, std::fabs(u[i]));
     c.mean_pressure += s.pressure[i] / static_cast<double>(n);
+    c.mean_gap += s.gap[i] / static_cast<double>(n);
+    c.mean_displacement += u[i] / static_cast<double>(n);
   }
   for (std::size_t i = 0; i < n; ++i)
-    c.consistency = std::max(c.consistency, std::fabs(s.gap[i] - g[i]) / scale);
+    c.inconsistency = std::max(c.inconsistency, std::fabs(s.gap[i] - g[i]));
   // The displacement field a user reads, and the pressure it makes.
   std::vector<double> returned(n);
   system.displacement(returned.data());
@@ -84,6 +91,8 @@ Check check_state(const System &system) {
   for (std::size_t i = 0; i < n; ++i)
     c.returned = std::max(c.returned, std::fabs(ku[i] - s.pressure[i]) /
                                           system.last_reference_pressure());
+  c.scale = scale;
+  c.consistency = c.inconsistency / scale;
   if (const PotentialInteraction *soft = potential_interaction(system.interaction())) {
     std::vector<double> phi(n), dphi(n);
     soft->potential().evaluate(static_cast<std::int64_t>(n), g.data(), phi.data(), dphi.data(),
@@ -192,6 +201,57 @@ TEST(ConvergedStates, UserPotentialCarryingATinyLoadFarFromContact) {
   system.set_reference_pressure(1e-9);
   for (const char *algorithm : load_solvers)
     expect_honest_load_solve(algorithm, system, -1e-9, 1e-8);
+}
+
+}  // namespace
+
+namespace {
+
+// bugnicourt on the gap under mean-gap control with a tolerance the starting point already
+// meets (any positive tolerance is legal): the solve converges at iteration 0, and the state
+// written back must still have the mean gap asked for and be the one its pressure makes. It
+// used to set the starting iterate's wall pixels on the wall after recomputing the gap, so
+// that the mean gap missed by up to 2 % and the gap was not the one the pressure makes. A state
+// solved to 1e-10 has its wall pixels on the wall exactly, each within the residue its error
+// accounts for (8 times the error, in units of P/k), and the mean gap still exact.
+TEST(ConvergedStates, MeanGapIsMetWhateverTheTolerance) {
+  auto grid = grid_2d(32, 32, 1.0, 1.0);
+  const std::vector<double> h = asp_test::rough_surface(*grid, 3, 0.1);
+  for (bool adhesive : {false, true}) {
+    System system(grid, 1.0);
+    system.set_topography(h.data());
+    if (adhesive) system.set_adhesion(1e-4, 0.01);
+    // The mean gap of the start (the undeformed surface touching its top) is its mean depth;
+    // a wider and a narrower one, and the same again from a converged state.
+    double depth = 0.0;
+    for (double v : h) depth += (system.max_height() - v) / static_cast<double>(h.size());
+    for (double factor : {1.05, 0.5, 0.95}) {
+      const double target = factor * depth;
+      for (double tolerance : {1e87, 1e-10}) {
+        Solver solver("bugnicourt");
+        solver.set_option("variable", std::string("gap"));
+        solver.set_option("tolerance", tolerance);
+        solver.solve(system, Control::mean_gap, target);
+        const SolveReport &r = solver.report();
+        std::ostringstream what;
+        what << (adhesive ? "adhesive" : "non-adhesive") << ", factor " << factor
+             << ", tolerance " << tolerance << ": " << describe(r);
+        SCOPED_TRACE(what.str());
+        EXPECT_TRUE(r.converged());
+        const Check c = check_state(system);
+        EXPECT_NEAR(c.mean_gap, target, 1e-12 * target);
+        EXPECT_NEAR(system.mean_gap(), target, 1e-12 * target);
+        const double residue = tolerance < 1.0 ? 8.0 * r.error *
+                                                     system.last_reference_pressure() /
+                                                     system.substrate().pixel_stiffness()
+                                               : 0.0;
+        EXPECT_LE(c.inconsistency, residue + 1e-12 * c.scale);
+        EXPECT_NEAR(c.mean_displacement, system.mean_pressure() / system.substrate().k0(),
+                    1e-12 * depth);
+        for (double g : system.state().gap) ASSERT_TRUE(std::isfinite(g));
+      }
+    }
+  }
 }
 
 }  // namespace
