@@ -651,7 +651,8 @@ ASP_EXPORT int asp_solver_describe(const asp_solver *solver, char *buffer, int64
                                    int64_t *length);
 
 /* Options by name. Every algorithm has
- *   "tolerance"       real in (0, 1e300], default 1e-8: stop when the error falls to it;
+ *   "tolerance"       real in (0, 1e300], default 1e-8: stop when the error falls to it
+ *                     (what the error can resolve: asp_solver_solve);
  *   "max_iterations"  integer in [1, 9.2e18], default 10000;
  *   "stall_window"    integer in [0, 9.2e18], default 1000: stop as stalled when this
  *                     many iterations have passed since the error last fell below 0.99
@@ -710,7 +711,22 @@ ASP_EXPORT int asp_solver_set_history(asp_solver *solver, int on);
  * the elastic pressure less the interaction's, K u + phi'(g). A primal solve stores the hard
  * wall's reading of its iterate: where the gap is open no pressure (with adhesion the
  * interaction's, -phi'(g), tensile), on the wall the elastic pressure, none below 0 (with
- * adhesion below -w/rho), and the gap that pressure makes.
+ * adhesion below -w/rho), and the gap that pressure makes (0 on the iterate's wall pixels
+ * where that gap is within 8 times the error, in units of the reference pressure over the
+ * stiffness of one pixel, and the error at most 1.25e-7; the penetration then keeps a mean
+ * gap control exact).
+ *
+ * What the error can resolve: it is computed in doubles from the pressures of the iterate,
+ * so a residual below their rounding, about 1e-16 times the largest of them (elastic,
+ * interaction or load) over the reference pressure, is not seen ("lbfgs" and "fire" under
+ * mean-pressure control carry the penetration in their displacement, and see no better
+ * than 1e-16 of it times the largest K~(q)). An error of exactly 0 means that the terms
+ * cancelled in floating point (a uniform or symmetric state, say), not that the state is
+ * exact: it is exact to round-off. A tolerance below that floor is met only by such a
+ * cancellation; otherwise the solve ends stalled or at the iteration limit. The error
+ * reported is that of the iterate written back into the system (of which a primal solve's
+ * state is the reading above), so that "converged" says that the state left met the
+ * tolerance.
  *
  * Every way a solve ends returns ASP_OK with a consistent, finite state in the system (the
  * gap is the one the pressure produces); asp_solver_termination says which way it ended:

@@ -119,11 +119,19 @@ double System::attractive_force() const {
 }
 
 void System::displacement(double *out) const {
-  // u = g + h - max h + delta, from the definition of the gap.
-  const double shift = state_.penetration - max_height_;
-  const double *g = state_.gap.data();
-  const double *h = heights_.data();
-  loops::for_each(grid_->local_pixels(), [&](std::int64_t i) { out[i] = g[i] + h[i] + shift; });
+  // u = K^-1 p, the displacement the pressure makes (with the mean pbar/K~(0) on a periodic
+  // substrate). Of a consistent state that is g + h - max h + delta as well, but taken from
+  // the gap it would carry the rounding of the gap and the penetration, 1e-16 of their size,
+  // which under a wall of long range can be 1e25 while the displacement is 1e-3: from the
+  // pressure it keeps its own precision. The transforms run on the library's buffers.
+  Spectrum spectrum = substrate_->make_spectrum();
+  substrate_->forward(state_.pressure.data(), spectrum.data());
+  Complex *s = spectrum.data();
+  const double *c = substrate_->normalised_compliance().data();
+  loops::for_each(substrate_->layout().size(), [&](std::int64_t q) { s[q] *= c[q]; });
+  Field u = grid_->make_field();
+  substrate_->backward(s, u.data());
+  std::copy(u.begin(), u.end(), out);
 }
 
 void System::set_adhesion(double work, double range) {

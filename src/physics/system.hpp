@@ -13,8 +13,9 @@
 namespace asp {
 
 // The state every solver leaves behind. Pressure and gap are consistent with each other:
-// gap = K^-1 pressure - (h - max h) - penetration, to rounding; a gap solve's pixels on the
-// wall have gap 0 exactly.
+// gap = K^-1 pressure - (h - max h) - penetration, to rounding, whatever the ending of the
+// solve (a gap solve's pixels on the wall keep the residue of its iterate there, of the order
+// of its error in units of P/k; the next gap solve starts them on the wall).
 struct ContactState {
   Field pressure;
   Field gap;
@@ -106,6 +107,7 @@ class System {
   // A pbar^2/(2 K~(0)) on a periodic substrate; 0 on a free one, whose elastic energy is
   // whole.
   double mean_mode_energy() const;
+  // The displacement u = K^-1 p of the state's pressure (two transforms), into out.
   void displacement(double *out) const;
 
  private:

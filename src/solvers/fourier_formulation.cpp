@@ -136,8 +136,17 @@ double FourierFormulation::error(const double *, const double *gradient) const {
 }
 
 bool FourierFormulation::finish() {
-  displacement_of(variable_.data(), displacement_.data());
-  return store_state(displacement_.data());
+  // The state from the variable's own spectrum U = to_spectrum v, as the error measure reads
+  // it (the elastic pressure s_k U_k mode by mode), not from a transform of the real-space
+  // displacement: under mean-pressure control that holds the penetration in its mean, whose
+  // rounding the transform would spread over every mode.
+  Complex *U = spectrum_.data();
+  const double *a = to_spectrum_.data();
+  const double *v = variable_.data();
+  loops::for_each(entries_, [&](std::int64_t k) {
+    U[k] = Complex(v[2 * k], v[2 * k + 1]) * a[k];
+  });
+  return store_state_from_spectrum(U);
 }
 
 }  // namespace asp

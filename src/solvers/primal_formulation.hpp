@@ -22,9 +22,9 @@
 // Units as for the dual formulation (SceneUnits): the gradient is the pressure over P, and the
 // error is the largest residual of the optimality conditions in units of P.
 //
-// During a solve the system's gap array holds the scaled iterate; finish() turns it back into
-// the gap, and stores the pressure it makes and the penetration. With adhesion the pressure
-// where the gap is open is the interaction's, -phi'(g) (tensile).
+// During a solve the system's gap array holds the scaled iterate; finish() stores the hard
+// wall's reading of it, the pressure, then the gap that pressure makes and the penetration.
+// With adhesion the pressure where the gap is open is the interaction's, -phi'(g) (tensile).
 #pragma once
 
 #include "physics/system.hpp"
@@ -38,8 +38,9 @@ class PrimalFormulation final : public ScaledFormulation {
  public:
   // Checks that the scene and the target can be represented (throws Error, the state
   // untouched), allocates the work arrays, then loads the stored gap (negative values
-  // clipped) as the starting iterate, with its mean rescaled to the target under mean-gap
-  // control (uniform if there is none).
+  // clipped, and 0 where the stored pressure is compressive: those pixels are on the wall) as
+  // the starting iterate, with its mean rescaled to the target under mean-gap control
+  // (uniform if there is none).
   PrimalFormulation(System &system, Control control, double value);
 
   // The gap on the grid; on a free substrate followed by the displacement of the padded

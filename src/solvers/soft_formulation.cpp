@@ -37,12 +37,16 @@ SoftFormulation::SoftFormulation(System &system, Control control, double value)
 double SoftFormulation::lower_bound() const { return -std::numeric_limits<double>::infinity(); }
 
 void SoftFormulation::starting_displacement(double *u) const {
-  // The state's displacement (System::displacement); under mean-pressure control less the
-  // penetration, which the objective folds into it, so that the gap carries over.
-  system_.displacement(u);
-  const double per_length = 1.0 / length_unit_;
-  const double folded = load_control() ? state_.penetration : 0.0;
-  loops::for_each(n_, [&](std::int64_t i) { u[i] = (u[i] - folded) * per_length; });
+  // The displacement of the state's gap, u = g + (h - max h) + delta; under mean-pressure
+  // control less the penetration, which the objective folds into it, so that the gap carries
+  // over. There it is g + (h - max h) itself: adding the penetration and taking it away again
+  // would cost the gap its rounding at the penetration's size.
+  const double per_length = 1.0 / length_unit_, top = max_height_;
+  const double shift = load_control() ? 0.0 : state_.penetration;
+  const double *g = state_.gap.data();
+  loops::for_each(n_, [&](std::int64_t i) {
+    u[i] = (g[i] + (heights_[i] - top) + shift) * per_length;
+  });
 }
 
 double SoftFormulation::interaction(const double *u, bool curvature) {
@@ -79,20 +83,31 @@ double SoftFormulation::contact_fraction(const double *) const {
 }
 
 bool SoftFormulation::store_state(const double *u) {
+  Spectrum spectrum = substrate_.make_spectrum();
+  substrate_.surface_forward(u, spectrum.data());
+  counters_.transforms += 1;
+  return store_state_from_spectrum(spectrum.data());
+}
+
+bool SoftFormulation::store_state_from_spectrum(Complex *s) {
+  // Under mean-pressure control the mean displacement (scaled), U_0/N, which sets the
+  // penetration below; it is read before the pass that overwrites the spectrum.
+  double mean_u = 0.0;
+  if (load_control()) {
+    if (substrate_.layout().is_mean(0)) mean_u = s[0].real() / substrate_.transform_points();
+    grid_.reductions().combine_sums(&mean_u, 1);
+  }
   // The elastic pressure K u over the surface (scaled: the normalised stiffness over the
   // pixel stiffness), without the q = 0 mode under mean-pressure control, where pbar is its
   // mean instead.
   const std::int64_t surface = substrate_.surface_size();
   Field elastic(static_cast<std::size_t>(surface));
-  Spectrum spectrum = substrate_.make_spectrum();
-  substrate_.surface_forward(u, spectrum.data());
-  Complex *s = spectrum.data();
   const double *k = substrate_.normalised_stiffness().data();
   const double factor = 1.0 / substrate_.pixel_stiffness();
-  loops::for_each(static_cast<std::int64_t>(spectrum.size()),
-                  [&](std::int64_t q) { s[q] *= factor * k[q]; });
+  const auto entries = static_cast<std::int64_t>(substrate_.layout().size());
+  loops::for_each(entries, [&](std::int64_t q) { s[q] *= factor * k[q]; });
   if (load_control() && substrate_.layout().is_mean(0)) s[0] = 0.0;
-  substrate_.surface_backward(spectrum.data(), elastic.data());
+  substrate_.surface_backward(s, elastic.data());
 
   // The state: that pressure in physical units, then the gap it makes, so that gap =
   // K^-1 p - (h - max h) - delta holds to rounding (on a free substrate K u outside the box,
@@ -105,16 +120,13 @@ bool SoftFormulation::store_state(const double *u) {
     return p[i] / n;
   });
   const double *c = substrate_.normalised_compliance().data();
-  substrate_.forward(p, spectrum.data());
-  loops::for_each(static_cast<std::int64_t>(spectrum.size()),
-                  [&](std::int64_t q) { s[q] *= c[q]; });
+  substrate_.forward(p, s);
+  loops::for_each(entries, [&](std::int64_t q) { s[q] *= c[q]; });
   double *displacement = elastic.data();
-  substrate_.backward(spectrum.data(), displacement);
-  counters_.transforms += 4;
+  substrate_.backward(s, displacement);
+  counters_.transforms += 3;
   // Under mean-pressure control the convention mean u = pbar/K~(0) sets the penetration that
   // keeps the iterate's gap: delta = pbar/K~(0) - l mean(u).
-  const double mean_u =
-      loops::sum(grid_.reductions(), n_, [&](std::int64_t i) { return u[i] / n; });
   const double delta = load_control() ? mean_pressure / substrate_.k0() - length_unit_ * mean_u
                                       : penetration_ * length_unit_;
   double *g = state_.gap.data();

@@ -62,6 +62,13 @@ class SoftFormulation : public ScaledFormulation {
   // K u (with pbar as its mean under mean-pressure control), the gap it makes, the
   // penetration. Returns false if a physical value is not finite.
   bool store_state(const double *u);
+  // The same from the displacement's spectrum (the substrate's surface_forward of it, which
+  // this overwrites). Under mean-pressure control the displacement's mean holds the
+  // penetration, which can exceed its variations by any factor; a formulation that holds the
+  // spectrum itself passes it here, so that the stored pressure is the one its error measure
+  // saw, without the rounding of that mean that a transform of the real-space displacement
+  // spreads over every mode (1e-16 of the mean, times K~ at the largest q).
+  bool store_state_from_spectrum(Complex *spectrum);
 
   bool load_control() const { return control_ == Control::mean_pressure; }
 

@@ -32,7 +32,7 @@ class Program:
     def real(self, v):
         if isinstance(v, str):
             self.byte(TABLE.index(v))
-        elif 0 <= v <= 1.61 and abs(v * 100 - round(v * 100)) < 1e-9:
+        elif (v == 0 or 0.01 <= v <= 1.61) and abs(v * 100 - round(v * 100)) < 1e-9:
             self.byte(78 + round(v * 100))
         else:
             self.byte(240)
@@ -237,6 +237,34 @@ def c_api_seeds():
     p.setting(0, 6, "1e-300")
     p.setting(0, 7, "inf")
     seeds["lennard_jones_extremes"] = p
+
+    p = Program()  # a soft wall of range 1e20 under load: the penetration is 1e25
+    p.grid_2d(31, 31, 1, 1)
+    p.topography(1, ("real", 1))
+    p.system(0, True, 1)
+    p.setting(0, 0)
+    p.setting(0, 2, 1e-3, 1e20, 0, 1e20)
+    p.setting(0, 6, 1e3)
+    p.solver(0, "lbfgs_fourier")
+    p.solve(0, 0, "mean_pressure", 1)
+    p.getter(0, 0)
+    p.solver(1, "gfmd")
+    p.option(1, "tolerance", 1e-288)
+    p.solve(1, 0, "mean_pressure", 1)
+    seeds["soft_wall_far_range"] = p
+
+    p = Program()  # bugnicourt on the gap, mean gap, a tolerance the start already meets
+    p.grid_2d(32, 32, 1, 1)
+    self_affine(p)
+    p.system(0, True, 1)
+    p.setting(0, 0)
+    p.setting(0, 1, 1e-4, 0.01)
+    p.solver(0, "bugnicourt")
+    p.option(0, "variable", "gap")
+    p.option(0, "tolerance", 1e87)
+    p.solve(0, 0, "mean_gap", 0.05)
+    p.getter(0, 0)
+    seeds["mean_gap_loose_tolerance"] = p
     return seeds
 
 
