@@ -565,7 +565,9 @@ ASP_EXPORT int asp_system_reset(asp_system *system);
 ASP_EXPORT int asp_system_get(const asp_system *system, int key, double *value);
 
 /* Fields of the current state, copied into the caller's array of n = nx*ny doubles (this
- * process's local_pixels on a distributed grid). */
+ * process's local_pixels on a distributed grid). The displacement is the one the pressure
+ * makes, K^-1 p (its mean by the q = 0 term), computed from the pressure on each call (one
+ * FFT pair), so that it stays exact however large the penetration. */
 #define ASP_FIELD_PRESSURE 401
 #define ASP_FIELD_GAP 402
 #define ASP_FIELD_DISPLACEMENT 403
