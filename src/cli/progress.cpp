@@ -2,6 +2,8 @@
 #include "progress.hpp"
 
 #include <cmath>
+#include <csignal>
+#include <ctime>
 
 #include <unistd.h>
 
@@ -9,10 +11,29 @@ namespace cli {
 namespace {
 
 volatile std::sig_atomic_t interrupt_count = 0;
+// When the first interrupt came (CLOCK_MONOTONIC seconds; written before the count).
+volatile double first_interrupt = 0.0;
+
+double monotonic_seconds() {
+  timespec now{};
+  clock_gettime(CLOCK_MONOTONIC, &now);  // async-signal-safe
+  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
+}
+
+// One Ctrl-C may arrive twice: sent to the process and to its process group (as `timeout`
+// does, and a shell's job control can), a moment apart. A second interrupt within this time
+// of the first is the same one; a later one is a second Ctrl-C.
+constexpr double same_interrupt_seconds = 0.5;
 
 void on_interrupt(int signal_number) {
-  interrupt_count = 1;
+  if (interrupt_count == 0) {
+    first_interrupt = monotonic_seconds();
+    interrupt_count = 1;
+    return;
+  }
+  if (monotonic_seconds() - first_interrupt < same_interrupt_seconds) return;
   std::signal(signal_number, SIG_DFL);  // a second Ctrl-C quits at once
+  std::raise(signal_number);
 }
 
 // Redraw at most this often: small solves make thousands of iterations a second.

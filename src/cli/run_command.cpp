@@ -68,6 +68,10 @@ int run_command(const std::vector<std::string> &arguments) {
     std::printf("solver            %s serves the scene\n", session.scene.solver.algorithm.c_str());
     return exit_converged;
   }
+  // From here on, a Ctrl-C cancels: one that comes while the scene is still being set up
+  // (a large surface, FFT planning) cancels the solve at its first iteration, so that the
+  // run ends the same way (exit 1, "cancelled", the files of the state) whenever it came.
+  InterruptGuard interrupts;
   Session session = open_session(scene_path, overrides, a.compute, true);
   if (session.scene.control.has_sweep) return run_sweep(session);
 
@@ -79,7 +83,6 @@ int run_command(const std::vector<std::string> &arguments) {
   std::printf("solver            %s\n", scene.solver.algorithm.c_str());
   std::fflush(stdout);
 
-  InterruptGuard interrupts;
   ProgressLine progress(stderr);
   const SolveReport report =
       solve(session.solver.get(), scene.solver.algorithm, contact, scene.control.control,

@@ -521,6 +521,15 @@ if command -v timeout > /dev/null; then
   rc=$?
   expect "Ctrl-C ends the solve with exit 1 (got $rc)" [ "$rc" -eq 1 ]
   expect "Ctrl-C is reported as cancelled" has "^termination +cancelled" "$out"
+  # timeout(1) sends its signal to the command and to its process group, a moment apart: one
+  # Ctrl-C that arrives twice. Whenever it comes, the run is cancelled, never killed.
+  for after in 1 1.3 1.6 1.9; do
+    timeout --preserve-status -s INT $after "$cli" run "$small" --tolerance 1e-300 \
+      --option stall_window=0 --option max_iterations=1e15 --output "endless-$after" \
+      > "$out" 2> "$err" < /dev/null
+    rc=$?
+    expect "Ctrl-C after $after s (sent twice) ends the solve with exit 1 (got $rc)" [ "$rc" -eq 1 ]
+  done
 else
   skip "no timeout(1) to interrupt the command"
 fi
