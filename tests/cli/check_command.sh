@@ -495,8 +495,7 @@ expect "no temporary file is left in the output directory" [ -z "$(ls -A linked 
 # described in moments: its transforms are planned at once (planning them once took minutes
 # at ten times the size).
 awk 'BEGIN { srand(1); for (i = 0; i < 200000; ++i) printf "%.6f %.6f\n", rand(), rand() }' > narrow.txt
-awk '{ a = a (NR > 1 ? " " : "") $1; b = b (NR > 1 ? " " : "") $2 } END { print a; print b }' \
-  narrow.txt > wide.txt
+{ cut -d' ' -f1 narrow.txt | paste -sd' '; cut -d' ' -f2 narrow.txt | paste -sd' '; } > wide.txt
 for shape in narrow wide; do
   started=$SECONDS
   run info $shape.txt --output info-$shape --no-plots
