@@ -118,28 +118,13 @@ double solve_fixed(asp::Solver &solver, asp::System &system, asp::Control contro
   solver.set_option("tolerance", 1e-300);
   solver.set_option("stall_window", 0.0);
   solver.set_option("max_iterations", static_cast<double>(iterations));
-  struct Clock {
-    std::int64_t first_iteration = -1, last_iteration = -1;
-    double first = 0.0, last = 0.0;
-  } clock;
-  solver.set_progress(
-      [](std::int64_t iteration, double seconds, double, void *data) {
-        auto *c = static_cast<Clock *>(data);
-        if (c->first_iteration < 0) {
-          c->first_iteration = iteration;
-          c->first = seconds;
-        }
-        c->last_iteration = iteration;
-        c->last = seconds;
-        return 0;
-      },
-      &clock);
+  bench::IterationClock clock;
+  clock.watch(solver);
   solver.solve(system, control, value);
   if (solver.report().termination != asp::Termination::iteration_limit)
     throw std::runtime_error(std::string("the solve ended: ") +
                              asp::termination_name(solver.report().termination));
-  const std::int64_t timed = clock.last_iteration - clock.first_iteration;
-  return timed > 0 ? (clock.last - clock.first) / static_cast<double>(timed) : 0.0;
+  return clock.per_iteration(0.0);
 }
 
 // The times of one library workload, from before its grid is made.

@@ -72,31 +72,43 @@ struct SolveTimes {
   double total = 0.0;
 };
 
+// A solve's clock as its progress callback sees it: the seconds at its first and last
+// iterations. watch() sets it as the solver's progress callback.
+struct IterationClock {
+  std::int64_t first_iteration = -1, last_iteration = -1;
+  double first = 0.0, last = 0.0;
+
+  void watch(asp::Solver &solver) {
+    solver.set_progress(
+        [](std::int64_t iteration, double seconds, double, void *data) {
+          auto *c = static_cast<IterationClock *>(data);
+          if (c->first_iteration < 0) {
+            c->first_iteration = iteration;
+            c->first = seconds;
+          }
+          c->last_iteration = iteration;
+          c->last = seconds;
+          return 0;
+        },
+        this);
+  }
+
+  // Seconds per iteration after the first; `none` when there was none.
+  double per_iteration(double none) const {
+    const std::int64_t iterations = last_iteration - first_iteration;
+    return iterations > 0 ? (last - first) / static_cast<double>(iterations) : none;
+  }
+};
+
 inline SolveTimes timed_solve(asp::Solver &solver, ScalingScene &scene) {
-  struct Clock {
-    std::int64_t first_iteration = -1, last_iteration = -1;
-    double first = 0.0, last = 0.0;
-  } clock;
-  solver.set_progress(
-      [](std::int64_t iteration, double seconds, double, void *data) {
-        auto *c = static_cast<Clock *>(data);
-        if (c->first_iteration < 0) {
-          c->first_iteration = iteration;
-          c->first = seconds;
-        }
-        c->last_iteration = iteration;
-        c->last = seconds;
-        return 0;
-      },
-      &clock);
+  IterationClock clock;
+  clock.watch(solver);
   solver.solve(*scene.system, scene.control, scene.value);
   solver.set_progress(nullptr, nullptr);
   SolveTimes t;
   t.setup = clock.first;
   t.total = solver.report().seconds;
-  const std::int64_t iterations = clock.last_iteration - clock.first_iteration;
-  t.per_iteration = iterations > 0 ? (clock.last - clock.first) / static_cast<double>(iterations)
-                                   : t.total;
+  t.per_iteration = clock.per_iteration(t.total);
   return t;
 }
 
