@@ -3,6 +3,8 @@
 // programs (fixtures in data/, made by data/make_fixtures.py with NumPy and zipfile), writing
 // them back, refusing malformed files with a useful message, and filling missing points.
 #include <gtest/gtest.h>
+
+#include "temp_path.hpp"
 #include <unistd.h>
 
 #include <cmath>
@@ -33,23 +35,6 @@ std::string data(const std::string &name) { return kData + "/" + name; }
 double expected(int64_t x, int64_t y) { return 10.0 * y + x + 0.5; }
 double expected_int(int64_t x, int64_t y) { return 10.0 * y + x - 5; }
 
-// A fresh file name in a directory of this process, removed with the directory at exit.
-std::string temp_path(const std::string &name) {
-  static const std::filesystem::path dir = [] {
-    auto d = std::filesystem::temp_directory_path() /
-             ("asperity_io_tests_" + std::to_string(::getpid()));
-    std::filesystem::create_directories(d);
-    return d;
-  }();
-  static struct Cleanup {
-    ~Cleanup() {
-      std::error_code ec;
-      std::filesystem::remove_all(dir, ec);
-    }
-  } cleanup;
-  const auto *info = ::testing::UnitTest::GetInstance()->current_test_info();
-  return (dir / (std::string(info ? info->name() : "x") + "_" + name)).string();
-}
 
 // The message of the FileError that reading throws ("" and a failure when none is thrown).
 std::string read_error(const std::string &path, FileFormat format = FileFormat::automatic) {

@@ -9,6 +9,8 @@
 // 8 GiB), inflated archives in full (2 GB) or read devices without end.
 #include <fcntl.h>
 #include <gtest/gtest.h>
+
+#include "temp_path.hpp"
 #include <signal.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
@@ -61,24 +63,6 @@ bool contains(const std::string &text, const std::string &part) {
   return text.find(part) != std::string::npos;
 }
 
-// A fresh path in a directory of this process, removed with the directory at exit (by this
-// process only: the children leave with _exit).
-std::string temp_path(const std::string &name) {
-  static const std::filesystem::path dir = [] {
-    auto d = std::filesystem::temp_directory_path() /
-             ("asperity_io_hostile_" + std::to_string(::getpid()));
-    std::filesystem::create_directories(d);
-    return d;
-  }();
-  static struct Cleanup {
-    ~Cleanup() {
-      std::error_code ec;
-      std::filesystem::remove_all(dir, ec);
-    }
-  } cleanup;
-  const auto *info = ::testing::UnitTest::GetInstance()->current_test_info();
-  return (dir / (std::string(info ? info->name() : "x") + "_" + name)).string();
-}
 
 std::string write_file(const std::string &name, const std::string &content) {
   const std::string path = temp_path(name);
