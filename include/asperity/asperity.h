@@ -361,8 +361,9 @@ ASP_EXPORT int asp_topography_power_spectrum(const asp_grid *grid, const double 
  * ========================================================================================== */
 typedef struct asp_system asp_system;
 
-/* A periodic elastic half-space of contact modulus E* = contact_modulus > 0 on the grid, with a
- * flat topography and zero pressure. The system keeps the grid alive. E* must leave the
+/* A periodic elastic half-space of contact modulus E* = contact_modulus > 0 on the grid, with
+ * zero pressure and no topography yet: set one (asp_system_set_topography) before a solve,
+ * which is refused until then. The system keeps the grid alive. E* must leave the
  * stiffness of every mode of the grid a finite, normal double. */
 ASP_EXPORT int asp_system_create(const asp_grid *grid, double contact_modulus, asp_system **out);
 
@@ -403,7 +404,9 @@ ASP_EXPORT int asp_system_create_free(const asp_grid *grid, double contact_modul
 ASP_EXPORT void asp_system_destroy(asp_system *system);
 
 /* Copies n = nx*ny finite heights (local_pixels of this process's rows on a distributed grid)
- * whose range max - min is a finite double. Resets the state
+ * whose range max - min is a finite double; a height that is NaN or infinite is refused with
+ * ASP_ERR_INVALID_ARGUMENT naming its pixel (x, y) and its index in the array (as are those
+ * given to asp_topography_detrend, _statistics and _power_spectrum). Resets the state
  * to zero pressure (a new surface makes the old state meaningless). */
 ASP_EXPORT int asp_system_set_topography(asp_system *system, const double *heights, int64_t n);
 
@@ -702,7 +705,10 @@ ASP_EXPORT int asp_solver_set_history(asp_solver *solver, int on);
  *                              reported. Offered by gap-based (primal) solvers only.
  * A request the algorithm cannot serve (control, substrate, interaction, or a control that
  * the chosen options do not offer) is refused with ASP_ERR_UNSUPPORTED before anything
- * changes.
+ * changes. A system whose topography was never set (asp_system_set_topography) is refused
+ * with ASP_ERR_INVALID_STATE naming it: the zeros it holds until then would be solved as a
+ * flat surface, and a forgotten topography reported as converged. A flat surface is an
+ * array of zeros set like any other (asp_topography_flat).
  *
  * The error is the largest force-balance residual over the pixels in pressure units, divided
  * by the reference pressure; for pressure-based (dual) solvers the residual is the gap

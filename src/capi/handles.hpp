@@ -23,6 +23,7 @@ struct asp_grid {
 struct asp_system {
   std::unique_ptr<asp::System> system;
   mutable bool busy = false;
+  bool has_topography = false;  // asp_system_set_topography succeeded once
 };
 
 struct asp_solver {
@@ -43,6 +44,14 @@ void require_handle(const Handle *handle, const char *name) {
                 "this callback (asp_solver_solve, or asp_system_get evaluating a potential): "
                 "a callback must not use the system or solver being solved");
 }
+
+// A system to be solved: Error(invalid_state) unless its topography was set (a solve on the
+// zeros it starts with would report a flat surface as converged).
+void require_topography(const asp_system *system);
+
+// n heights of the grid (this process's rows), all finite: else Error(invalid_argument)
+// naming the first that is not by its pixel (x, y) and its index in the array.
+void require_finite_heights(const Grid &grid, const double *heights, std::int64_t n);
 
 // Marks handles busy for its lifetime (null handles are skipped).
 class BusyScope {

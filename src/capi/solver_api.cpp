@@ -155,6 +155,7 @@ int asp_solver_solve(asp_solver *solver, asp_system *system, int control, double
     asp::capi::require_handle(solver, "solver");
     solver->solver->forget_last_solve();
     asp::capi::require_handle(system, "system");
+    asp::capi::require_topography(system);
     const asp::Control c = control_of(control);
     // The algorithm and its options as one number (their count differs between algorithms),
     // whether the history is kept (it adds sums to each iteration), the control and the value.

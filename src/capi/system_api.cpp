@@ -61,9 +61,10 @@ int asp_system_set_topography(asp_system *system, const double *heights, int64_t
   return guarded_on("asp_system_set_topography", grid_of(system), [&](Agreement &agreement) {
     asp::capi::require_handle(system, "system");
     asp::require_array(heights, n, system->system->grid().local_pixels(), "heights");
-    asp::require_finite_array(heights, n, "heights");
+    asp::capi::require_finite_heights(system->system->grid(), heights, n);
     agreement.checks_passed();
     system->system->set_topography(heights);
+    system->has_topography = true;
   });
 }
 

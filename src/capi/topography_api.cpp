@@ -1,5 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // asp_topography_*: surface generators and statistics, filling the caller's arrays.
+#include <cmath>
+#include <string>
+
 #include "capi/constants.hpp"
 #include "capi/firewall.hpp"
 #include "capi/handles.hpp"
@@ -24,6 +27,33 @@ const asp::Grid &grid_for(const asp_grid *grid, const void *heights, int64_t n) 
 }
 }  // namespace
 
+namespace asp::capi {
+
+void require_topography(const asp_system *system) {
+  if (!system->has_topography)
+    throw Error(Status::invalid_state,
+                "argument 'system' has no topography: set its heights with "
+                "asp_system_set_topography before solving (an array of zeros, such as "
+                "asp_topography_flat makes, is a flat surface)");
+}
+
+void require_finite_heights(const Grid &grid, const double *heights, std::int64_t n) {
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (std::isfinite(heights[i])) continue;
+    const std::int64_t x = i % grid.nx(), y = grid.row_offset() + i / grid.nx();
+    const std::string pixel = grid.dimension() == 1
+                                  ? "x = " + std::to_string(x)
+                                  : "x = " + std::to_string(x) + ", y = " + std::to_string(y);
+    throw Error(Status::invalid_argument,
+                "array 'heights' has " + format_number(heights[i]) + " at pixel (" + pixel +
+                    "), index " + std::to_string(i) +
+                    (grid.partition() != nullptr ? " of this process's rows" : "") +
+                    "; heights must be finite");
+  }
+}
+
+}  // namespace asp::capi
+
 extern "C" {
 
 int asp_topography_detrend(const asp_grid *grid, int mode, double *heights, int64_t n) {
@@ -33,7 +63,7 @@ int asp_topography_detrend(const asp_grid *grid, int mode, double *heights, int6
     const asp::Detrend detrend = mode == ASP_DETREND_MEAN    ? asp::Detrend::mean
                                  : mode == ASP_DETREND_PLANE ? asp::Detrend::plane
                                                              : asp::Detrend::curvature;
-    asp::require_finite_array(heights, n, "heights");
+    asp::capi::require_finite_heights(g, heights, n);
     agreement.checks_passed({Agreement::bits(mode)}, "argument 'mode'");
     asp::detrend_topography(g, detrend, heights);
   });
@@ -107,7 +137,7 @@ int asp_topography_statistics(const asp_grid *grid, const double *heights, int64
                               double *rms_height, double *rms_slope, double *rms_curvature) {
   return guarded_on("asp_topography_statistics", grid_of(grid), [&](Agreement &agreement) {
     const asp::Grid &g = grid_for(grid, heights, n);
-    asp::require_finite_array(heights, n, "heights");
+    asp::capi::require_finite_heights(g, heights, n);
     agreement.checks_passed();
     asp::surface_statistics(g, heights, rms_height, rms_slope, rms_curvature);
   });
@@ -117,7 +147,7 @@ int asp_topography_power_spectrum(const asp_grid *grid, const double *heights, i
                                   int64_t n_bins, double *q, double *c) {
   return guarded_on("asp_topography_power_spectrum", grid_of(grid), [&](Agreement &agreement) {
     const asp::Grid &g = grid_for(grid, heights, n);
-    asp::require_finite_array(heights, n, "heights");
+    asp::capi::require_finite_heights(g, heights, n);
     asp::require_not_null(q, "q");
     asp::require_not_null(c, "c");
     agreement.checks_passed({Agreement::bits(n_bins)}, "argument 'n_bins'");

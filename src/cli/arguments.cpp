@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "arguments.hpp"
 
+#include <cctype>
 #include <cerrno>
 #include <climits>
 #include <cstdio>
@@ -10,6 +11,7 @@
 
 #include "commands.hpp"
 #include "exit_status.hpp"
+#include "scene_reader.hpp"
 
 namespace cli {
 
@@ -125,6 +127,19 @@ void Arguments::refuse(const std::string &problem) const {
                     " --help' for the options.");
 }
 
+void Arguments::refuse_unknown(const std::string &help) const {
+  std::vector<std::string> options;
+  for (size_t at = help.find("--"); at != std::string::npos; at = help.find("--", at + 2)) {
+    size_t end = at + 2;
+    while (end < help.size() && (std::islower(static_cast<unsigned char>(help[end])) ||
+                                 help[end] == '-'))
+      ++end;
+    if (end > at + 2) options.push_back(help.substr(at, end - at));
+  }
+  const std::string &a = current();
+  refuse("unknown option" + did_you_mean(a.substr(0, a.find('=')), options));
+}
+
 bool Arguments::scene_option(std::vector<Override> &overrides) {
   auto add = [&](const std::string &key, const std::string &value, const std::string &shown) {
     overrides.push_back({key + "=" + value, shown});
@@ -196,7 +211,8 @@ bool read_scene_arguments(Arguments &args, const char *help, SceneArguments &out
       out.scene_path = args.current();
       continue;
     }
-    args.refuse(args.positional() ? "a second scene: the command takes one" : "unknown option");
+    if (args.positional()) args.refuse("a second scene: the command takes one");
+    args.refuse_unknown(std::string(help) + scene_options_help + compute_options_help(""));
   }
   return true;
 }

@@ -29,6 +29,9 @@ class Arguments {
   int count();
   bool positional() const;  // does not start with '-' (or is "-")
   [[noreturn]] void refuse(const std::string &problem) const;
+  // Refuses the current argument as an unknown option, with the closest of the options that
+  // `help` names (every "--name" in it) as a suggestion.
+  [[noreturn]] void refuse_unknown(const std::string &help) const;
 
   // The scene overrides shared by run, compare and sweep: --set KEY=VALUE, --algorithm NAME,
   // --tolerance T, --option NAME=VALUE, --output DIR, --no-plots. True if the current

@@ -26,7 +26,9 @@ const char *const compare_help =
     "solve ended, its iterations, time, FFTs, results, and how far its pressure field\n"
     "lies from that of the first solver that converged. By default every algorithm that\n"
     "serves the scene (its substrate, interaction and control) runs; the others are\n"
-    "listed as skipped, with the reason. The error of each solver is its own measure of\n"
+    "listed as skipped, with the reason. An algorithm with a choice of unknown (its\n"
+    "option variable: pressure or gap) runs once for each that serves the scene, named\n"
+    "NAME:VARIABLE (lbfgsb:gap), unless the scene sets its variable. The error of each solver is its own measure of\n"
     "the force balance (docs/algorithms.md): all are pressures relative to the same\n"
     "reference pressure, so their tolerances mean the same. Each solver runs one\n"
     "untimed iteration first, so that no time includes the FFT planning that the first\n"
@@ -46,8 +48,9 @@ const char *const compare_help =
     "  error_vs_iteration.png  error against iteration (when gnuplot is installed)\n"
     "\n"
     "Solvers:\n"
-    "  --solvers A,B,...  these algorithms, in this order (compare.solvers); each must\n"
-    "                     serve the scene\n"
+    "  --solvers A,B,...  these algorithms, in this order (compare.solvers): NAME for\n"
+    "                     each of its variants that serves the scene (one must), or\n"
+    "                     NAME:VARIABLE for one (lbfgsb:gap, which must serve it)\n"
     "  --repeats K        solves of each solver, K >= 1 (default: 3 when its first\n"
     "                     solve takes under 10 s, else 1)\n"
     "Options of one algorithm come from [compare.options.NAME] tables of the scene;\n"
@@ -160,7 +163,10 @@ int compare_command(const std::vector<std::string> &arguments) {
   if (scene.control.has_sweep)
     throw usage_error(scene.source + ": control: compare solves one value; this scene sweeps");
 
-  // The solvers: made, configured and checked against the scene before any solve.
+  // The solvers: made, configured and checked against the scene before any solve. An
+  // algorithm with a choice of variable (pk's pressure, bugnicourt's and lbfgsb's pressure or
+  // gap) runs once for each one that serves the scene, named "lbfgsb:gap", unless the scene
+  // fixes its variable (in its options, or by naming "lbfgsb:gap" in compare.solvers).
   const bool chosen = !scene.compare.solvers.empty();
   const std::vector<std::string> names =
       chosen ? scene.compare.solvers : split_names(algorithm_names(), '\n');
@@ -170,27 +176,56 @@ int compare_command(const std::vector<std::string> &arguments) {
       common.push_back(o);
   std::vector<Entry> entries;
   std::vector<std::string> skipped;
-  std::set<std::string> seen;
+  std::set<std::string> algorithms, labels;
   for (const std::string &name : names) {
-    if (!seen.insert(name).second)
-      throw usage_error(scene.source + ": compare.solvers: \"" + name + "\" is listed twice");
+    const size_t colon = name.find(':');
+    const std::string algorithm = name.substr(0, colon);
+    const std::string named_variable = colon == std::string::npos ? "" : name.substr(colon + 1);
+    const std::string where = scene.source + ": compare.solvers: " + name;
+    if (algorithm.empty() || (colon != std::string::npos && named_variable.empty()))
+      throw usage_error(where + ": expected NAME or NAME:VARIABLE, such as lbfgsb:gap");
+    algorithms.insert(algorithm);
     std::vector<OptionSetting> settings =
-        name == scene.solver.algorithm ? scene.solver.options : common;
-    const auto own = scene.compare.options.find(name);
+        algorithm == scene.solver.algorithm ? scene.solver.options : common;
+    const auto own = scene.compare.options.find(algorithm);
     if (own != scene.compare.options.end())
       settings.insert(settings.end(), own->second.begin(), own->second.end());
-    const std::string where = scene.source + ": compare.solvers: " + name;
-    Solver solver = make_solver(name, where, settings);
-    const std::string refused = refusal(solver.get(), contact, control);
-    if (!refused.empty()) {
-      if (chosen) throw usage_error(where + ": " + refused);
-      skipped.push_back(name + ": " + refused);
-      continue;
+    // The variants: the one named or set, else every value of the algorithm's variable.
+    std::vector<std::string> variants = {named_variable};
+    if (named_variable.empty()) {
+      for (const OptionSetting &o : settings)
+        if (o.name == "variable" && !o.is_number) variants = {o.text};
+      if (variants.front().empty()) {
+        const std::vector<std::string> all = variables(make_solver(algorithm, where, {}).get());
+        if (!all.empty()) variants = all;
+      }
     }
-    entries.push_back({name, std::move(solver)});
+    std::vector<std::string> refusals;
+    size_t served = 0;
+    for (const std::string &variable : variants) {
+      const std::string label = variant_name(algorithm, variable);
+      if (!labels.insert(label).second)
+        throw usage_error(where + ": " + label + " is compared twice");
+      // A variable set in the settings is applied after the variant's own, and is the same.
+      Solver solver = make_variant(algorithm, variable, where, settings);
+      const std::string refused = refusal(solver.get(), contact, control);
+      if (refused.empty()) {
+        entries.push_back({label, std::move(solver)});
+        ++served;
+      } else {
+        refusals.push_back(label + ": " + refused);
+      }
+    }
+    // A solver the scene names must serve it, in one of its variants at least.
+    if (chosen && served == 0) {
+      std::string text;
+      for (const std::string &r : refusals) text += (text.empty() ? "" : "; ") + r;
+      throw usage_error(where + ": " + text);
+    }
+    skipped.insert(skipped.end(), refusals.begin(), refusals.end());
   }
   for (const auto &[name, options] : scene.compare.options)
-    if (!seen.count(name))
+    if (!algorithms.count(name))
       throw usage_error(scene.source + ": compare.options." + name +
                         ": options for an algorithm that is not compared");
   if (entries.empty())
@@ -253,15 +288,24 @@ int compare_command(const std::vector<std::string> &arguments) {
   CsvTable histories(header);
   CsvTable summary({"algorithm", "termination", "iterations", "evaluations", "transforms",
                     column("seconds", "s"), "error", "tolerance", "contact_fraction",
-                    column("mean_pressure", pressure_unit), column("penetration", s.unit),
+                    column("mean_pressure", pressure_unit_of(s)), column("penetration", s.unit),
                     column("mean_gap", s.unit), "repeats", column("cpu_seconds", "s"),
                     column("seconds_spread", "s")});
   LinePlot by_time, by_iteration;
-  by_time.title = "error against time (" + scene.source + ")";
+  // The scene by its file's name: a long path would crowd the title out.
+  const std::string scene_name = scene.source.substr(scene.source.find_last_of('/') + 1);
+  by_time.title = "error against time (" + scene_name + ")";
   by_time.x_label = "wall-clock time [s]";
-  by_iteration.title = "error against iteration (" + scene.source + ")";
+  by_iteration.title = "error against iteration (" + scene_name + ")";
   by_iteration.x_label = "iteration";
-  by_time.y_label = by_iteration.y_label = "error";
+  by_time.y_label = by_iteration.y_label = error_label;
+  // One tolerance line when every solver had the same (compare.options may differ).
+  for (const Timing &t : timings) {
+    const double tolerance = t.report.tolerance;
+    if (&t == &timings.front()) by_time.tolerance = tolerance;
+    else if (tolerance != by_time.tolerance) by_time.tolerance = 0.0;
+  }
+  by_iteration.tolerance = by_time.tolerance;
   by_time.log_y = by_iteration.log_y = true;
   std::vector<const Timing *> converged;  // fastest first
   for (const Timing &t : timings) {

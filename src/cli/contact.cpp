@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "io/height_map.hpp"
+#include "scene_reader.hpp"
 
 namespace cli {
 namespace {
@@ -151,7 +152,8 @@ Surface measured_surface(const Scene &scene) {
     for (double &h : map.heights) h *= factor;
   } else if (!s.unit.empty()) {
     s.notes.push_back("heights taken in " + s.unit + ": " + t.path +
-                      " does not give their unit (set topography.height_unit)");
+                      " does not give their unit (" +
+                      (t.from_options ? "--height-unit" : "set topography.height_unit") + ")");
   }
 
   // The box: the scene's, else from the pixel size, else the file's.
@@ -178,6 +180,7 @@ Surface measured_surface(const Scene &scene) {
     s.lx = static_cast<double>(map.nx);
     s.ly = static_cast<double>(map.ny);
     s.unit = "";
+    s.lengths_in_pixels = true;
     s.notes.push_back(t.path + " does not give its physical size: lengths in pixels");
   } else {
     throw usage_error(where + ": " + t.path +
@@ -189,7 +192,9 @@ Surface measured_surface(const Scene &scene) {
   if (map.missing > 0) {
     if (!t.fill_missing)
       throw usage_error(where + ": " + t.path + " has " + asp::io::describe_missing(map) +
-                        "; set topography.missing = \"interpolate\" to fill them");
+                        (t.from_options ? "; use --missing interpolate to fill them"
+                                        : "; set topography.missing = \"interpolate\" to "
+                                          "fill them"));
     const std::string missing = asp::io::describe_missing(map);
     try {
       asp::io::fill_missing(map);
@@ -251,6 +256,7 @@ Surface make_surface(const Scene &scene, const ComputeOptions &compute) {
 Contact make_contact(const Scene &scene, const ComputeOptions &compute) {
   Contact c;
   c.surface = make_surface(scene, compute);
+  c.surface.pressure_unit = scene.substrate.pressure_unit;
   c.grid = make_grid(c.surface, compute);
   const SubstrateSpec &sub = scene.substrate;
   c.periodic = sub.periodic;
@@ -261,6 +267,11 @@ Contact make_contact(const Scene &scene, const ComputeOptions &compute) {
                         "is a profile (one row)");
     c.periodic = true;
     c.surface.notes.push_back("a profile (one row): solved on the periodic substrate");
+  } else if (sub.periodic && scene.topography.kind == TopographyKind::file) {
+    c.surface.notes.push_back(
+        "a measured surface on the periodic substrate, which repeats it and joins its edges; "
+        "a measurement is not periodic: the free half-space (substrate.type = \"free\", the "
+        "default for files) loads only the box");
   }
   asp_system *system = nullptr;
   const std::string where = scene.source + ": [substrate]";
@@ -295,8 +306,26 @@ Contact make_contact(const Scene &scene, const ComputeOptions &compute) {
 Solver make_solver(const std::string &algorithm, const std::string &where,
                    const std::vector<OptionSetting> &settings) {
   asp_solver *solver = nullptr;
-  check_given(asp_solver_create(algorithm.c_str(), &solver), where);
+  const int created = asp_solver_create(algorithm.c_str(), &solver);
+  if (created == ASP_ERR_UNSUPPORTED) {  // an unknown algorithm
+    const std::string message = refusal_message();  // before the next call empties it
+    std::vector<std::string> names;
+    std::istringstream lines(algorithm_names());
+    for (std::string name; std::getline(lines, name);) names.push_back(name);
+    throw usage_error(where + ": " + message + did_you_mean(algorithm, names));
+  }
+  check_given(created, where);
   Solver owned(solver);
+  // A name the algorithm does not know is refused here, with the closest of its options
+  // (the library lists them but cannot guess what was meant).
+  const std::vector<std::string> names = option_names(solver);
+  for (const OptionSetting &o : settings) {
+    if (std::find(names.begin(), names.end(), o.name) != names.end()) continue;
+    std::string known;
+    for (const std::string &n : names) known += (known.empty() ? "" : ", ") + n;
+    throw usage_error(o.where + ": solver '" + algorithm + "' has no option '" + o.name + "'" +
+                      did_you_mean(o.name, names) + " (its options: " + known + ")");
+  }
   for (const OptionSetting &o : settings) {
     const int status = o.is_number
                            ? asp_solver_set_option(solver, o.name.c_str(), o.number)

@@ -21,6 +21,8 @@ struct Surface {
   double lx = 0.0;
   double ly = 0.0;  // lx for a one-dimensional grid
   std::string unit;  // "" when the scene is dimensionless
+  std::string pressure_unit;  // the scene's substrate.pressure_unit; "" when it gives none
+  bool lengths_in_pixels = false;  // the file gives no size: lengths count pixels (info only)
   std::vector<double> heights;  // x fastest
   std::string description;      // one line: what the surface is and where it came from
   std::vector<std::string> notes;  // what was assumed or changed on the way (units, filling)

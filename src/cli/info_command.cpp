@@ -113,7 +113,8 @@ int info_command(const std::vector<std::string> &arguments) {
     } else if (args.positional() && path.empty()) {
       path = args.current();
     } else {
-      args.refuse(args.positional() ? "a second file: info takes one" : "unknown option");
+      if (args.positional()) args.refuse("a second file: info takes one");
+      args.refuse_unknown(std::string(info_help) + compute_options_help(info_planning));
     }
   }
   if (path.empty())
@@ -147,6 +148,7 @@ int info_command(const std::vector<std::string> &arguments) {
     t.pixel_size = pixel_size;
     t.fill_missing = missing == "interpolate";
     t.pixels_when_size_unknown = true;
+    t.from_options = true;
     t.detrend = detrend == "mean"    ? ASP_DETREND_MEAN
                 : detrend == "plane" ? ASP_DETREND_PLANE
                 : detrend == "curvature" ? ASP_DETREND_CURVATURE
@@ -178,17 +180,27 @@ int info_command(const std::vector<std::string> &arguments) {
   double mean = 0.0;
   for (double h : s.heights) mean += h;
   mean /= static_cast<double>(n);
-  const char *u = s.unit.empty() ? "(pixels)" : s.unit.c_str();
+  // Without a unit, heights are the file's own numbers (not pixels), and lengths count
+  // pixels when the file gives no size, else are the file's numbers too.
+  const std::string u = s.unit.empty() ? "" : " " + s.unit;
+  const std::string length_unit = !s.unit.empty()       ? u
+                                  : s.lengths_in_pixels ? " pixels"
+                                                        : " (no unit: the file's numbers)";
+  const std::string heights_unit = s.unit.empty() ? " (no unit: the file's numbers)" : u;
 
   std::printf("surface           %s\n", s.description.c_str());
   for (const std::string &note : s.notes) std::printf("note              %s\n", note.c_str());
-  std::printf("pixel size        %.6g %s", s.lx / static_cast<double>(s.nx), u);
-  if (!s.one_dimensional) std::printf(" x %.6g %s", s.ly / static_cast<double>(s.ny), u);
-  std::printf("\nheights           min %.6g, max %.6g, mean %.6g %s\n", *lowest, *highest, mean,
-              u);
-  std::printf("rms height        %.6g %s\n", rms_height, u);
-  std::printf("rms slope         %.6g\n", rms_slope);
-  std::printf("rms curvature     %.6g 1/%s\n", rms_curvature, u);
+  std::printf("pixel size        %.6g", s.lx / static_cast<double>(s.nx));
+  if (!s.one_dimensional) std::printf(" x %.6g", s.ly / static_cast<double>(s.ny));
+  std::printf("%s\nheights           min %.6g, max %.6g, mean %.6g%s\n", length_unit.c_str(),
+              *lowest, *highest, mean, heights_unit.c_str());
+  std::printf("rms height        %.6g%s\n", rms_height, heights_unit.c_str());
+  std::printf("rms slope         %.6g%s\n", rms_slope,
+              s.lengths_in_pixels ? " (height per pixel)" : "");
+  std::printf("rms curvature     %.6g%s\n", rms_curvature,
+              !s.unit.empty()       ? (" 1/" + s.unit).c_str()
+              : s.lengths_in_pixels ? " (height per pixel^2)"
+                                    : "");
 
   const std::string length = s.unit.empty() ? "pixel" : s.unit;
   const std::string c_unit = length + (s.one_dimensional ? "^3" : "^4");
@@ -204,7 +216,7 @@ int info_command(const std::vector<std::string> &arguments) {
   std::string files = "power_spectrum.csv";
   if (plots) {
     LinePlot plot;
-    plot.title = "power spectrum (" + path + ")";
+    plot.title = "power spectrum (" + path.substr(path.find_last_of('/') + 1) + ")";
     plot.x_label = "q [1/" + length + "]";
     plot.y_label = "C(q) [" + c_unit + "]";
     plot.log_x = plot.log_y = true;

@@ -5,6 +5,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "asperity/asperity.h"
 #include "exit_status.hpp"
@@ -46,5 +47,15 @@ const char *termination_name(int reason);
 
 // The text of asp_algorithms: one name per line.
 std::string algorithm_names();
+
+// What asp_solver_describe says of the solver's algorithm.
+std::string description(const asp_solver *solver);
+
+// The names of the solver's options, in the order its description lists them.
+std::vector<std::string> option_names(const asp_solver *solver);
+
+// The values of the solver's option "variable" (the unknown it solves for: "pressure",
+// "gap"), its default first; empty when the algorithm has one formulation only.
+std::vector<std::string> variables(const asp_solver *solver);
 
 }  // namespace cli

@@ -76,6 +76,14 @@ void OutputFile::commit() {
 
 const char *const pressure_unit = "E* unit";
 
+std::string pressure_unit_of(const Surface &surface) {
+  return surface.pressure_unit.empty() ? pressure_unit : surface.pressure_unit;
+}
+
+std::string pressure_unit_text(const Surface &surface) {
+  return surface.pressure_unit.empty() ? "in the units of E*" : surface.pressure_unit;
+}
+
 std::string prepare_directory(const std::string &directory, const std::string &where) {
   std::error_code error;
   std::filesystem::create_directories(directory, error);

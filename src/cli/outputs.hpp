@@ -64,6 +64,13 @@ std::string column(const std::string &name, const std::string &unit);
 // The unit of pressures: that of E* (the scene does not fix one).
 extern const char *const pressure_unit;
 
+// The unit of pressures of a surface's scene, for CSV columns and plot labels: its
+// substrate.pressure_unit, else pressure_unit.
+std::string pressure_unit_of(const Surface &surface);
+// The same after a number in a report: "MPa", else "in the units of E*" (not "units of E*",
+// which reads as a multiple of E*).
+std::string pressure_unit_text(const Surface &surface);
+
 // Reads one field of the system (ASP_FIELD_*).
 std::vector<double> read_field(const Contact &contact, int field);
 

@@ -44,7 +44,7 @@ const char *control_name(int control) {
 }
 
 std::string control_unit(int control, const Surface &surface) {
-  if (control == ASP_CONTROL_MEAN_PRESSURE) return pressure_unit;
+  if (control == ASP_CONTROL_MEAN_PRESSURE) return pressure_unit_text(surface);
   return surface.unit.empty() ? "scene length unit" : surface.unit;
 }
 
@@ -67,7 +67,8 @@ void print_solve(std::FILE *out, const SolveReport &r, const Surface &s) {
                termination_name(r.termination), static_cast<long long>(r.iterations), r.seconds);
   std::fprintf(out, "error             %.3e (tolerance %.3g)\n", r.error, r.tolerance);
   std::fprintf(out, "contact fraction  %.6f\n", r.contact_fraction);
-  std::fprintf(out, "mean pressure     %.6g (units of E*)\n", r.mean_pressure);
+  std::fprintf(out, "mean pressure     %.6g (%s)\n", r.mean_pressure,
+               pressure_unit_text(s).c_str());
   std::fprintf(out, "penetration       %.6g%s\n", r.penetration, u.c_str());
   std::fprintf(out, "mean gap          %.6g%s\n", r.mean_gap, u.c_str());
 }
@@ -85,12 +86,12 @@ void write_summary(const std::string &path, const Scene &scene, const SolveRepor
   table.add_row({"error", cell(r.error), ""});
   table.add_row({"tolerance", cell(r.tolerance), ""});
   table.add_row({"contact_fraction", cell(r.contact_fraction), ""});
-  table.add_row({"mean_pressure", cell(r.mean_pressure), pressure_unit});
+  table.add_row({"mean_pressure", cell(r.mean_pressure), pressure_unit_of(s)});
   table.add_row({"penetration", cell(r.penetration), s.unit});
   table.add_row({"mean_gap", cell(r.mean_gap), s.unit});
   table.add_row({"total_force", cell(r.total_force),
-                 std::string(pressure_unit) + (area_unit.empty() ? "" : " " + area_unit)});
-  table.add_row({"contact_modulus", cell(scene.substrate.contact_modulus), pressure_unit});
+                 pressure_unit_of(s) + (area_unit.empty() ? "" : " " + area_unit)});
+  table.add_row({"contact_modulus", cell(scene.substrate.contact_modulus), pressure_unit_of(s)});
   table.write(path);
 }
 

@@ -59,11 +59,7 @@ int run_command(const std::vector<std::string> &arguments) {
 
   if (check_only) {
     Session session = open_session(scene_path, overrides, a.compute, false);
-    Solver solver = make_solver(session.scene.solver.algorithm, session.scene.solver.where,
-                                session.scene.solver.options);
-    const std::string refused = refusal(solver.get(), session.contact,
-                                        session.scene.control.control);
-    if (!refused.empty()) throw usage_error(session.scene.solver.where + ": " + refused);
+    scene_solver(session.scene, session.contact);
     print_scene(stdout, session.scene, session.contact);
     std::printf("solver            %s serves the scene\n", session.scene.solver.algorithm.c_str());
     return exit_converged;
@@ -106,19 +102,23 @@ int run_command(const std::vector<std::string> &arguments) {
   if (scene.output.plots) {
     const Surface &s = contact.surface;
     const std::string length = s.unit.empty() ? "length" : "length [" + s.unit + "]";
+    // The scene by its file's name: a long path would crowd the title out.
+    const std::string scene_name = scene.source.substr(scene.source.find_last_of('/') + 1);
     auto draw = [&](const std::string &name, const std::vector<double> &values,
-                    const std::string &label) {
+                    const std::string &label, Colours colours = Colours::sequential) {
       const std::string png = dir + "/" + name + ".png";
       const std::string note =
-          session.plotter.map(png, values, s.nx, s.ny, s.lx, s.ly, name + " (" + scene.source +
-                                                                       ")",
-                              label, length);
+          session.plotter.map(png, values, s.nx, s.ny, s.lx, s.ly,
+                              name + " (" + scene_name + ")", label, length, colours);
       if (note.empty()) written.push_back(name + ".png");
       else notes.push_back(note);
     };
     for (const std::string &field : scene.output.fields) {
       if (field == "pressure")
-        draw(field, read_field(contact, ASP_FIELD_PRESSURE), "pressure [E* unit]");
+        draw(field, read_field(contact, ASP_FIELD_PRESSURE),
+             s.pressure_unit.empty() ? "pressure (in the units of E*)"
+                                     : "pressure [" + s.pressure_unit + "]",
+             Colours::signed_values);
       else if (field == "gap")
         draw(field, read_field(contact, ASP_FIELD_GAP), s.unit.empty() ? "gap" : "gap [" + s.unit + "]");
       else if (field == "contact")
@@ -130,9 +130,10 @@ int run_command(const std::vector<std::string> &arguments) {
     }
     if (scene.output.history && !report.history.empty()) {
       LinePlot plot;
-      plot.title = "convergence of " + report.algorithm + " (" + scene.source + ")";
+      plot.title = "convergence of " + report.algorithm + " (" + scene_name + ")";
       plot.x_label = "iteration";
-      plot.y_label = "error";
+      plot.y_label = error_label;
+      plot.tolerance = report.tolerance;
       plot.log_y = true;
       plot.series.push_back({report.algorithm, report.history[0], report.history[4]});
       const std::string note = session.plotter.lines(dir + "/convergence.png", plot);

@@ -129,6 +129,7 @@ void check_grid_fits(SceneTable &t, const GridSpec &grid) {
 
 GridSpec read_grid(SceneTable t, bool from_file) {
   GridSpec grid;
+  t.accepts({"nx", "ny", "lx", "ly", "unit"});
   grid.unit = length_unit(t, "unit");
   if (from_file) {
     // The file gives the pixels; the scene may state them only to check them.
@@ -153,11 +154,17 @@ GridSpec read_grid(SceneTable t, bool from_file) {
 
 SubstrateSpec read_substrate(SceneTable t, bool measured) {
   SubstrateSpec substrate;
+  t.accepts({"type", "contact_modulus", "k0", "pressure_unit"});
   // Measured surfaces are not periodic: their default is the free half-space.
   substrate.type_given = t.has("type");
   substrate.periodic =
       t.choice("type", {"periodic", "free"}, measured ? "free" : "periodic") == "periodic";
   substrate.contact_modulus = t.positive("contact_modulus");
+  // A name to show with pressures ("MPa"): nothing is converted.
+  substrate.pressure_unit = t.text("pressure_unit", "");
+  if (t.has("pressure_unit") &&
+      substrate.pressure_unit.find_first_not_of(" \t") == std::string::npos)
+    t.refuse("pressure_unit", "is empty: leave it out for pressures in the units of E*");
   substrate.k0 = t.positive("k0", 0.0);
   if (!substrate.periodic && t.has("k0"))
     t.refuse("k0", "the free half-space has no q = 0 mode to set");
@@ -178,23 +185,29 @@ TopographySpec read_topography(SceneTable t, const std::string &directory) {
   TopographySpec s;
   const std::string type = t.choice("type", {"self_affine", "flat", "sphere", "paraboloid",
                                              "sinusoid", "double_sinewave", "file"});
+  t.accepts({"detrend"});
   if (type == "flat") {
     s.kind = TopographyKind::flat;
   } else if (type == "sphere" || type == "paraboloid") {
     s.kind = type == "sphere" ? TopographyKind::sphere : TopographyKind::paraboloid;
+    t.accepts({"radius"});
     s.radius = t.positive("radius");
   } else if (type == "sinusoid") {
     s.kind = TopographyKind::sinusoid;
+    t.accepts({"amplitude", "periods_x", "periods_y"});
     s.amplitude = t.positive("amplitude");
     s.periods_x = t.integer("periods_x", 1, 1);
     s.periods_y = t.integer("periods_y", 0, 0);
   } else if (type == "double_sinewave") {
     s.kind = TopographyKind::double_sinewave;
+    t.accepts({"amplitude", "ripple_amplitude", "ripple_periods"});
     s.amplitude = t.positive("amplitude");
     s.ripple_amplitude = t.non_negative("ripple_amplitude", 0.0);
     s.ripple_periods = t.integer("ripple_periods", 1);
   } else if (type == "self_affine") {
     s.kind = TopographyKind::self_affine;
+    t.accepts({"hurst", "long_cutoff", "rolloff", "short_cutoff", "rms_slope", "rms_height",
+               "seed"});
     s.hurst = t.real("hurst", 0.8);
     if (!(s.hurst > 0.0 && s.hurst < 1.0)) t.refuse("hurst", "must lie in (0, 1)");
     s.long_cutoff = t.positive("long_cutoff", 0.0);
@@ -206,6 +219,7 @@ TopographySpec read_topography(SceneTable t, const std::string &directory) {
     s.seed = t.integer("seed", INT64_MIN, 1);
   } else {
     s.kind = TopographyKind::file;
+    t.accepts({"path", "format", "height_unit", "pixel_size", "missing"});
     const std::string path = t.text("path");
     if (path.empty()) t.refuse("path", "is empty");
     s.path = path[0] == '/' || directory.empty() ? path : directory + "/" + path;
@@ -226,10 +240,12 @@ InteractionSpec read_interaction(SceneTable t) {
                "hard_wall");
   if (type == "adhesive_hard_wall") {
     s.kind = InteractionKind::adhesive_hard_wall;
+    t.accepts({"work_of_adhesion", "range"});
     s.work_of_adhesion = t.positive("work_of_adhesion");
     s.range = t.positive("range");
   } else if (type == "soft_wall") {
     s.kind = InteractionKind::soft_wall;
+    t.accepts({"gamma_r", "gamma_a", "range", "rho_r", "rho_a"});
     s.gamma_r = t.positive("gamma_r");
     s.gamma_a = t.non_negative("gamma_a", 0.0);
     // One range for both exponentials unless each is given.
@@ -243,6 +259,7 @@ InteractionSpec read_interaction(SceneTable t) {
     }
   } else if (type == "lennard_jones") {
     s.kind = InteractionKind::lennard_jones;
+    t.accepts({"work_of_adhesion", "equilibrium_distance"});
     s.work_of_adhesion = t.positive("work_of_adhesion");
     s.equilibrium_distance = t.positive("equilibrium_distance");
   }
@@ -252,6 +269,7 @@ InteractionSpec read_interaction(SceneTable t) {
 
 SweepSpec read_sweep(SceneTable t) {
   SweepSpec s;
+  t.accepts({"values", "from", "to", "steps", "unload"});
   if (t.has("values")) {
     for (const char *key : {"from", "to", "steps"})
       if (t.has(key)) t.refuse(key, "give either 'values' or 'from', 'to' and 'steps'");
@@ -272,6 +290,7 @@ SweepSpec read_sweep(SceneTable t) {
 
 ControlSpec read_control(SceneTable t) {
   ControlSpec s;
+  t.accepts({"quantity", "value", "sweep"});
   s.quantity = t.choice("quantity", {"mean_pressure", "penetration", "mean_gap"});
   s.control = s.quantity == "mean_pressure" ? ASP_CONTROL_MEAN_PRESSURE
               : s.quantity == "penetration" ? ASP_CONTROL_PENETRATION
@@ -324,6 +343,7 @@ std::vector<OptionSetting> read_option_table(const toml::table &table, const std
 
 SolverSpec read_solver(SceneTable t) {
   SolverSpec s;
+  t.accepts({"algorithm", "tolerance", "max_iterations", "stall_window", "options"});
   s.algorithm = t.text("algorithm", s.algorithm);
   const toml::node *named = t.node("algorithm");
   s.where = (named != nullptr ? where(named->source()) : std::string("built-in default")) +
@@ -339,9 +359,23 @@ SolverSpec read_solver(SceneTable t) {
     common("max_iterations", static_cast<double>(t.integer("max_iterations", 1)));
   if (t.has("stall_window"))
     common("stall_window", static_cast<double>(t.integer("stall_window", 0)));
+  // "lbfgsb:gap" is lbfgsb with the option variable = "gap", as compare names it.
+  const size_t colon = s.algorithm.find(':');
+  std::string variable;
+  if (colon != std::string::npos) {
+    variable = s.algorithm.substr(colon + 1);
+    s.algorithm.erase(colon);
+    if (s.algorithm.empty() || variable.empty())
+      t.refuse("algorithm", "expected NAME or NAME:VARIABLE, such as \"lbfgsb:gap\"");
+    s.options.push_back({"variable", false, 0.0, variable, s.where});
+  }
   if (const toml::table *options = t.table("options")) {
-    for (const OptionSetting &o : read_option_table(*options, t.key_name("options")))
+    for (const OptionSetting &o : read_option_table(*options, t.key_name("options"))) {
+      if (o.name == "variable" && !variable.empty())
+        throw usage_error(o.where + ": the variable is given twice: here and in " + s.where +
+                          " (" + s.algorithm + ":" + variable + ")");
       s.options.push_back(o);
+    }
   }
   t.finish();
   return s;
@@ -401,10 +435,13 @@ Scene read_document(toml::table &document, const std::string &source,
   scene.source = source;
   scene.directory = directory;
   SceneTable top(document, "");
+  top.accepts({"title", "grid", "substrate", "topography", "interaction", "control", "solver",
+               "compare", "output"});
   scene.title = top.text("title", "");
   const toml::table empty;
   auto required = [&](const std::string &name) -> const toml::table & {
     const toml::table *table = top.table(name);
+    if (table == nullptr) top.refuse_misspelling(name);
     if (table == nullptr)
       throw usage_error(source + ": [" + name + "]: missing: the scene needs a [" + name +
                         "] table");

@@ -25,6 +25,7 @@ struct SubstrateSpec {
   bool periodic = true;
   bool type_given = false;  // the scene chose periodic or free (else the default for its kind)
   double contact_modulus = 1.0;  // E*
+  std::string pressure_unit;     // the unit of E* and every pressure, shown only ("" none)
   double k0 = 0.0;               // 0: the library's default
 };
 
@@ -55,6 +56,8 @@ struct TopographySpec {
   double pixel_size = 0.0;  // declares the file's pixel size in the scene unit (0 none)
   bool fill_missing = false;
   bool pixels_when_size_unknown = false;  // asperity info: lengths in pixels for want of a size
+  bool from_options = false;  // asperity info FILE: the settings above are its options, which
+                              // messages name (--missing, not topography.missing)
   // every kind
   int detrend = 0;  // 0 none, else ASP_DETREND_*
 };

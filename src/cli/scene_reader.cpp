@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "scene_reader.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -48,7 +50,61 @@ bool before(const toml::source_position &a, const toml::source_position &b) {
   return a.line < b.line || (a.line == b.line && a.column < b.column);
 }
 
+// Lower case, without underscores and hyphens: "max_iterations" and "MaxIterations" compare
+// alike.
+std::string folded(const std::string &word) {
+  std::string text;
+  for (char c : word)
+    if (c != '_' && c != '-') text += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
+}
+
+// The optimal-string-alignment distance: insertions, deletions, substitutions and swaps of
+// two neighbours, each counting one.
+size_t edit_distance(const std::string &a, const std::string &b) {
+  std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
+  for (size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (size_t i = 1; i <= a.size(); ++i)
+    for (size_t j = 1; j <= b.size(); ++j) {
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1,
+                          d[i - 1][j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+    }
+  return d[a.size()][b.size()];
+}
+
 }  // namespace
+
+std::string closest(const std::string &word, const std::vector<std::string> &candidates) {
+  const std::string w = folded(word);
+  std::string best;
+  size_t best_distance = std::numeric_limits<size_t>::max();
+  for (const std::string &candidate : candidates) {
+    const std::string c = folded(candidate);
+    if (c.empty() || w.empty() || candidate == word) continue;
+    size_t distance = edit_distance(w, c);
+    // Close: a third of the shorter word's letters may differ (at least one), so that short
+    // words are not matched to anything; an abbreviation of three letters or more is close
+    // too ("tol" for "tolerance"), ranked after every word within the distance.
+    const bool near = distance <= std::max<size_t>(1, std::min(w.size(), c.size()) / 3);
+    const bool abbreviation = w.size() >= 3 && c.compare(0, w.size(), w) == 0;
+    if (!near && !abbreviation) continue;
+    if (!near) distance = c.size();
+    if (distance < best_distance) {
+      best = candidate;
+      best_distance = distance;
+    }
+  }
+  return best;
+}
+
+std::string did_you_mean(const std::string &word, const std::vector<std::string> &candidates,
+                         const std::string &prefix) {
+  const std::string c = closest(word, candidates);
+  return c.empty() ? "" : "; did you mean " + prefix + c + "?";
+}
 
 std::string where(const toml::source_region &source) {
   const std::string path = source.path ? *source.path : std::string("scene");
@@ -72,6 +128,10 @@ void SceneTable::refuse(const std::string &key, const std::string &problem) cons
   throw usage_error(where(source) + ": " + key_name(key) + ": " + problem);
 }
 
+void SceneTable::accepts(std::initializer_list<const char *> keys) const {
+  for (const char *key : keys) asked_.insert(key);
+}
+
 const toml::node *SceneTable::node(const std::string &key) {
   read_.insert(key);
   return table_.get(key);
@@ -80,6 +140,7 @@ const toml::node *SceneTable::node(const std::string &key) {
 const toml::node &SceneTable::need(const std::string &key) {
   const toml::node *value = node(key);
   if (value == nullptr) {
+    refuse_misspelling(key);
     const std::string table = name_.empty() ? "the scene" : "[" + name_ + "]";
     throw usage_error(where(table_.source()) + ": " + key_name(key) + ": missing: " + table +
                       " needs the key '" + key + "'");
@@ -222,9 +283,19 @@ const toml::table *SceneTable::table(const std::string &key) {
 void SceneTable::one_of(const std::string &a, const std::string &b, bool required) const {
   if (has(a) && has(b)) refuse(b, "give either '" + a + "' or '" + b + "', not both");
   if (required && !has(a) && !has(b)) {
+    refuse_misspelling(a);
+    refuse_misspelling(b);
     const std::string table = name_.empty() ? "the scene" : "[" + name_ + "]";
     throw usage_error(where(table_.source()) + ": " + key_name(a) + ": missing: " + table +
                       " needs '" + a + "' or '" + b + "'");
+  }
+}
+
+void SceneTable::refuse_misspelling(const std::string &key) const {
+  for (auto &&[present, value] : table_) {
+    const std::string name(present.str());
+    if (read_.count(name) == 0 && asked_.count(name) == 0 && closest(name, {key}) == key)
+      unknown(name, value);
   }
 }
 
@@ -239,11 +310,22 @@ void SceneTable::finish() const {
       first_node = &value;
     }
   }
-  if (first_node == nullptr) return;
+  if (first_node != nullptr) unknown(first, *first_node);
+}
+
+std::vector<std::string> SceneTable::accepted() const {
+  std::set<std::string> keys = read_;
+  keys.insert(asked_.begin(), asked_.end());
+  return std::vector<std::string>(keys.begin(), keys.end());
+}
+
+void SceneTable::unknown(const std::string &key, const toml::node &value) const {
+  const std::vector<std::string> keys = accepted();
   std::string known;
-  for (const std::string &key : read_) known += (known.empty() ? "" : ", ") + key;
-  throw usage_error(where(first_node->source()) + ": " + key_name(first) +
-                    ": unknown key" + (known.empty() ? "" : " (the keys here are: " + known + ")"));
+  for (const std::string &k : keys) known += (known.empty() ? "" : ", ") + k;
+  throw usage_error(where(value.source()) + ": " + key_name(key) + ": unknown key" +
+                    did_you_mean(key, keys) +
+                    (known.empty() ? "" : " (the keys here are: " + known + ")"));
 }
 
 }  // namespace cli

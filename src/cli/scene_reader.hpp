@@ -15,6 +15,16 @@
 
 namespace cli {
 
+// The candidate closest to `word`, for a "did you mean" after an unknown key, option or
+// name, or "" when none is close: within about a third of the shorter's letters by edit
+// distance (insertions, deletions, substitutions and swaps of neighbours), or one that
+// starts with the word ("maxiter" for "max_iterations"), underscores and hyphens aside.
+std::string closest(const std::string &word, const std::vector<std::string> &candidates);
+
+// "; did you mean NAME?" with the closest candidate (shown as `prefix` + candidate), or "".
+std::string did_you_mean(const std::string &word, const std::vector<std::string> &candidates,
+                         const std::string &prefix = "");
+
 // "scene.toml:12:3" for a node of the file, the argument ("--tolerance 1e-10") for a value
 // given on the command line.
 std::string where(const toml::source_region &source);
@@ -28,8 +38,16 @@ class SceneTable {
   // "grid.nx" for key "nx".
   std::string key_name(const std::string &key) const;
 
-  bool has(const std::string &key) const { return table_.contains(key); }
+  // Whether the key is present; a key asked about is one the table accepts, listed as such
+  // when a key is unknown.
+  bool has(const std::string &key) const {
+    asked_.insert(key);
+    return table_.contains(key);
+  }
   const toml::node *node(const std::string &key);  // marks the key read; null if absent
+  // Declares keys the table accepts before they are read, so that a key refused as unknown
+  // or missing before the others are read is shown with all of them.
+  void accepts(std::initializer_list<const char *> keys) const;
 
   // Numbers: an integer or a float, finite. Required (throw if missing) or with a fallback.
   double real(const std::string &key);
@@ -51,7 +69,11 @@ class SceneTable {
   // A sub-table ([grid.sweep] or an inline table); null if absent, refused if not a table.
   const toml::table *table(const std::string &key);
 
-  // Throws usage_error at the first key (in the file's order) that was not read.
+  // A missing key that the table holds misspelt ("work_adhesion" for "work_of_adhesion") is
+  // refused as the unknown key it is, with the right one; else nothing happens.
+  void refuse_misspelling(const std::string &key) const;
+  // Throws usage_error at the first key (in the file's order) that was not read, with every
+  // key the table accepts and the closest of them.
   void finish() const;
   // Throws usage_error "WHERE: KEY: problem", at the key's value if it is present, at the table
   // otherwise.
@@ -61,10 +83,15 @@ class SceneTable {
 
  private:
   const toml::node &need(const std::string &key);
+  // Every key read or asked about, sorted.
+  std::vector<std::string> accepted() const;
+  [[noreturn]] void unknown(const std::string &key, const toml::node &value) const;
+
 
   const toml::table &table_;
   std::string name_;
   std::set<std::string> read_;
+  mutable std::set<std::string> asked_;
 };
 
 }  // namespace cli

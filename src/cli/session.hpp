@@ -37,4 +37,22 @@ void make_directory(Session &session);
 // The solver's refusal of the scene, if any: "" when it serves it.
 std::string refusal(asp_solver *solver, const Contact &contact, int control);
 
+// A solver of `algorithm` with its option "variable" set to `variable` ("" leaves the default),
+// then the settings.
+Solver make_variant(const std::string &algorithm, const std::string &variable,
+                    const std::string &where, std::vector<OptionSetting> settings);
+
+// How compare names a variant: "lbfgsb:gap", or the algorithm's name when it has no variable.
+std::string variant_name(const std::string &algorithm, const std::string &variable);
+
+// Every algorithm, in each of its variants, that serves the contact under the control, by
+// variant_name.
+std::vector<std::string> serving_solvers(const Contact &contact, int control);
+
+// The scene's solver with its options, checked against the scene. An algorithm that serves
+// the scene in none of its variants is refused for that before its options are set (they may
+// have been written for another algorithm: --algorithm pk on a scene written for bugnicourt
+// on the gap); a refusal names the solvers that do serve the scene.
+Solver scene_solver(const Scene &scene, const Contact &contact);
+
 }  // namespace cli

@@ -271,6 +271,32 @@ class Errors(unittest.TestCase):
             asperity.System(grid, -1.0)
 
 
+class Topography(unittest.TestCase):
+    """A solve needs a topography; a bad height is named by its pixel."""
+
+    def test_solve_without_topography_raises(self):
+        # Solved as the zeros it starts with, a forgotten topography used to report a flat
+        # surface as converged.
+        grid = asperity.Grid(8, 8, 1.0, 1.0)
+        system = asperity.System(grid, 1.0)
+        solver = asperity.Solver("pk")
+        with self.assertRaises(asperity.InvalidStateError) as caught:
+            solver.solve(system, "mean_pressure", 0.01)
+        self.assertIn("has no topography", caught.exception.message)
+        self.assertIn("asp_system_set_topography", caught.exception.message)
+        system.topography = np.zeros((8, 8))  # a flat surface, set like any other
+        self.assertTrue(solver.solve(system, "mean_pressure", 0.01).converged)
+
+    def test_bad_height_named_by_its_pixel(self):
+        grid = asperity.Grid(8, 4, 2.0, 1.0)
+        system = asperity.System(grid, 1.0)
+        heights = np.zeros((4, 8))
+        heights[1, 5] = np.nan  # row y = 1, column x = 5: index 13, x fastest
+        with self.assertRaises(asperity.InvalidArgumentError) as caught:
+            system.set_topography(heights)
+        self.assertIn("at pixel (x = 5, y = 1), index 13", caught.exception.message)
+
+
 class Handles(unittest.TestCase):
     def test_system_keeps_its_grid_alive(self):
         grid = asperity.Grid(16, 16, 1.0, 1.0)

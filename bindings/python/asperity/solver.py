@@ -195,7 +195,8 @@ class Solver(OwnedHandle):
 
         Starts from the system's current state (warm start) and leaves the solution there.
         Returns a :class:`Report`. Every way a solve ends (converged or not) returns; an
-        error status raises (the system then keeps its previous state).
+        error status raises (the system then keeps its previous state): InvalidStateError
+        for a system whose topography was never set.
         """
         code = _names.resolve(_names.CONTROL, control, "control")
         progress = self._progress

@@ -20,7 +20,10 @@ class System(OwnedHandle):
 
     ``substrate`` is "periodic" (asp_system_create) or "free" (asp_system_create_free: a
     non-periodic half-space loaded only inside the box; 2D grids only). The system starts
-    with a flat topography, zero pressure and the plain hard wall. It holds a reference to
+    with zero pressure, the plain hard wall and no topography: a solve before
+    :meth:`set_topography` (or assigning :attr:`topography`) raises InvalidStateError (for a
+    flat surface, set zeros). A NaN or infinite height raises InvalidArgumentError naming its
+    pixel (x, y). It holds a reference to
     its Grid (and the library keeps the C grid alive too).
 
     Fields (new NumPy arrays of shape (ny, nx) in C order, (nx,) in 1D, (local_ny, nx) on a
