@@ -128,7 +128,7 @@ sed 's/^ny = 64$/nyy = 64/' "$small" > unknown.toml
 bad "unknown.toml:7:7: grid.nyy" "unknown key" run unknown.toml
 
 sed 's/^\[control\]$/[contrl]/' "$small" > unknown_table.toml
-bad "unknown_table.toml" "control.*missing" run unknown_table.toml
+bad "unknown_table.toml" "contrl: unknown key; did you mean control\?" run unknown_table.toml
 
 grep -v '^contact_modulus' "$small" > missing.toml
 bad "substrate.contact_modulus" "missing" run missing.toml
@@ -260,13 +260,13 @@ expect "a file that cannot be written is named" has "limited/.*: (writing failed
 run compare "$small" --solvers pk,bugnicourt --output compared
 expect "comparing pk and bugnicourt exits 0 (stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
 expect "the comparison lists pk" has "^pk +converged" "$out"
-expect "the comparison lists bugnicourt" has "^bugnicourt +converged" "$out"
+expect "the comparison lists bugnicourt" has "^bugnicourt:pressure +converged" "$out"
 expect "the comparison names the fastest, or none within the spread of their repeats" \
   has "^fastest +(pk|bugnicourt|no winner: .* differ by less than the spread)" "$out"
 expect "compare.csv has its header" [ "$(header_of compared/compare.csv)" = \
   "algorithm,iteration,evaluations,transforms,seconds [s],error,objective,contact_fraction" ]
 expect "compare.csv has rows of both solvers" \
-  bash -c 'grep -q "^pk,0," "$1" && grep -q "^bugnicourt,0," "$1"' _ compared/compare.csv
+  bash -c 'grep -q "^pk,0," "$1" && grep -q "^bugnicourt:pressure,0," "$1"' _ compared/compare.csv
 expect "compare_summary.csv has one row per solver" [ "$(wc -l < compared/compare_summary.csv)" -eq 3 ]
 expect "the two solvers agree on the pressure field to 1e-5" awk '
   $1 == "bugnicourt" { exit ($NF + 0 < 1e-5) ? 0 : 1 }' "$out"
@@ -287,7 +287,7 @@ bad "compare.solvers: lbfgs" "does not handle a non-adhesive hard wall|hard wall
   compare "$small" --solvers pk,lbfgs
 run compare "$small" --output every
 expect "compare without --solvers runs every solver that serves the scene (exit $rc)" \
-  has "^bugnicourt +converged" "$out"
+  has "^bugnicourt:pressure +converged" "$out"
 expect "compare without --solvers lists the others as skipped" has "^skipped +lbfgs: " "$out"
 
 # ---- sweep ----------------------------------------------------------------------------------

@@ -327,6 +327,7 @@ class Handles(unittest.TestCase):
     def test_close_and_context_managers(self):
         with asperity.Grid(8, 1.0) as grid, asperity.System(grid, 1.0) as system, \
                 asperity.Solver("pk") as solver:
+            system.topography = np.zeros(8)
             solver.solve(system, "mean_pressure", 1e-3)
         with self.assertRaises(asperity.NullPointerError):
             system.reset()
