@@ -214,6 +214,7 @@ int compare_command(const std::vector<std::string> &arguments) {
         ++served;
       } else {
         refusals.push_back(label + ": " + refused);
+        if (chosen && variants.size() == 1) refusals.back() = refused;  // named already
       }
     }
     // A solver the scene names must serve it, in one of its variants at least.
