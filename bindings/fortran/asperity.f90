@@ -52,7 +52,8 @@
 ! the text as an allocatable character, and take an optional status argument when the C
 ! call can fail ('' is returned then): asp_status_text(status), asp_last_error_text(),
 ! asp_version_text(), asp_algorithms_text([status]), asp_solver_describe_text(solver
-! [, status]), asp_solver_get_option_string_text(solver, name [, status]).
+! [, status]), asp_solver_get_option_string_text(solver, name [, status]),
+! asp_system_check_resolution_text(system [, ratio, resolved, status]).
 !
 ! The progress callback's signature is the abstract interface asp_progress_fn:
 !
@@ -136,7 +137,7 @@ module asperity
             asp_system_set_k0, asp_system_set_adhesion, asp_system_set_soft_wall, &
             asp_system_set_lennard_jones, asp_system_set_hard_wall, asp_system_set_potential, &
             asp_system_set_reference_pressure, asp_system_reset, &
-            asp_system_get, asp_system_get_field
+            asp_system_get, asp_system_get_field, asp_system_check_resolution
   public :: asp_algorithms
   public :: asp_solver_create, asp_solver_destroy, asp_solver_describe, asp_solver_set_option, &
             asp_solver_set_option_string, asp_solver_get_option, asp_solver_get_option_string, &
@@ -150,7 +151,8 @@ module asperity
   ! Helpers (see the top of this file)
   public :: asp_string
   public :: asp_status_text, asp_last_error_text, asp_version_text, asp_algorithms_text, &
-            asp_solver_describe_text, asp_solver_get_option_string_text
+            asp_solver_describe_text, asp_solver_get_option_string_text, &
+            asp_system_check_resolution_text
 
   ! The progress callback: called once per iteration with the iteration number (0 is the
   ! starting point), the seconds since the solve started and the error; return 0 to go on,
@@ -554,6 +556,20 @@ module asperity
     end function
     module procedure solver_get_option_string_int, solver_get_option_string_i64
   end interface
+  interface asp_system_check_resolution
+    function c_asp_system_check_resolution(system, ratio, resolved, buffer, size, length) &
+        bind(c, name='asp_system_check_resolution')
+      import :: c_int, c_int64_t, c_double, c_char, c_ptr
+      type(c_ptr), value :: system
+      real(c_double), intent(out) :: ratio
+      integer(c_int), intent(out) :: resolved
+      character(kind=c_char), intent(out) :: buffer(*)
+      integer(c_int64_t), value :: size
+      integer(c_int64_t), intent(out) :: length
+      integer(c_int) :: c_asp_system_check_resolution
+    end function
+    module procedure system_check_resolution_int, system_check_resolution_i64
+  end interface
   interface asp_solver_set_max_iterations
     function c_asp_solver_set_max_iterations(solver, max_iterations) &
         bind(c, name='asp_solver_set_max_iterations')
@@ -833,6 +849,34 @@ contains
     if (present(status)) status = stat
   end function
 
+  ! The sentence of asp_system_check_resolution: whether the grid resolves the system's
+  ! interaction, with its ratio (the cohesive zone over the pixel size) and flag if asked.
+  function asp_system_check_resolution_text(system, ratio, resolved, status) result(text)
+    type(c_ptr), intent(in) :: system
+    real(c_double), intent(out), optional :: ratio
+    integer(c_int), intent(out), optional :: resolved
+    integer(c_int), intent(out), optional :: status
+    character(len=:), allocatable :: text
+    character(kind=c_char) :: probe(1)
+    character(kind=c_char), allocatable :: buffer(:)
+    integer(c_int64_t) :: length, buffer_size
+    integer(c_int) :: stat, flag
+    real(c_double) :: value
+    text = ''
+    value = 0
+    flag = 0
+    stat = c_asp_system_check_resolution(system, value, flag, probe, 0_c_int64_t, length)
+    if (stat == ASP_OK) then
+      buffer_size = length + 1
+      allocate (buffer(buffer_size))
+      stat = c_asp_system_check_resolution(system, value, flag, buffer, buffer_size, length)
+      if (stat == ASP_OK) text = text_of(buffer, int(length))
+    end if
+    if (present(ratio)) ratio = value
+    if (present(resolved)) resolved = flag
+    if (present(status)) status = stat
+  end function
+
   ! ---- default integers and Fortran strings going in ----
 
   function grid_create_1d_int(nx, lx, out) result(status)
@@ -991,6 +1035,33 @@ contains
     integer(c_int) :: status
     status = c_asp_solver_get_option_string(solver, c_string(name), buffer, &
                                             min(size, len(buffer, c_int64_t)), length)
+  end function
+
+  function system_check_resolution_int(system, ratio, resolved, buffer, size, length) &
+      result(status)
+    type(c_ptr), intent(in) :: system
+    real(c_double), intent(out) :: ratio
+    integer(c_int), intent(out) :: resolved
+    character(len=*), intent(out) :: buffer
+    integer(c_int), intent(in) :: size
+    integer(c_int64_t), intent(out) :: length
+    integer(c_int) :: status
+    status = c_asp_system_check_resolution(system, ratio, resolved, buffer, &
+                                           min(int(size, c_int64_t), len(buffer, c_int64_t)), &
+                                           length)
+  end function
+
+  function system_check_resolution_i64(system, ratio, resolved, buffer, size, length) &
+      result(status)
+    type(c_ptr), intent(in) :: system
+    real(c_double), intent(out) :: ratio
+    integer(c_int), intent(out) :: resolved
+    character(len=*), intent(out) :: buffer
+    integer(c_int64_t), intent(in) :: size
+    integer(c_int64_t), intent(out) :: length
+    integer(c_int) :: status
+    status = c_asp_system_check_resolution(system, ratio, resolved, buffer, &
+                                           min(size, len(buffer, c_int64_t)), length)
   end function
 
   function solver_set_max_iterations_int(solver, max_iterations) result(status)

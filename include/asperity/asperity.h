@@ -380,9 +380,16 @@ ASP_EXPORT int asp_system_create(const asp_grid *grid, double contact_modulus, a
  *   - asp_system_set_k0 and asp_system_get with ASP_K0 return ASP_ERR_UNSUPPORTED;
  *   - ASP_ELASTIC_ENERGY is the whole elastic energy (a/2) sum p u, and ASP_MEAN_MODE_ENERGY
  *     is 0;
- *   - the solvers on the pressure work on it ("pk"; "bugnicourt" with "variable" =
- *     "pressure"); a solver on the gap is refused with ASP_ERR_UNSUPPORTED, because the
- *     inverse of the compliance restricted to the box is not a convolution;
+ *   - the solvers on the pressure serve it under mean-pressure and penetration control
+ *     ("pk"; "bugnicourt" and "lbfgsb" with "variable" = "pressure", "lbfgsb" under
+ *     penetration control only, as everywhere); the solvers on the gap ("bugnicourt" and
+ *     "lbfgsb" with "variable" = "gap", with or without adhesion, "lbfgsb" also with a
+ *     user's potential and the hard wall) serve it under ASP_CONTROL_PENETRATION only:
+ *     the inverse of the compliance restricted to the box is not a convolution, so they
+ *     minimise over the displacement of the whole padded surface, whose mean is not a free
+ *     mode, and mean-gap control is refused with ASP_ERR_UNSUPPORTED; of the unconstrained
+ *     solvers of soft potentials, "lbfgs" and "fire" serve it under penetration control,
+ *     and "lbfgs_fourier", "fire_mass_weighted" and "gfmd" (periodic only) refuse it;
  *   - in the error measure the stiffness of one pixel is 1/C(0), C(0) the displacement of a
  *     pixel under unit pressure on itself (4 ln(1 + sqrt 2) dx/(pi E*), about 1.12 dx/E*,
  *     for square pixels of width dx); for a surface without slope the scale of a solve
@@ -577,6 +584,44 @@ ASP_EXPORT int asp_system_get(const asp_system *system, int key, double *value);
 #define ASP_FIELD_TOPOGRAPHY 404
 ASP_EXPORT int asp_system_get_field(const asp_system *system, int field, double *values,
                                     int64_t n);
+
+/* Whether the grid resolves the system's interaction, asked before any solve (it reads the
+ * parameters only: no transform, no callback, no change). An adhesive contact's edge is a
+ * crack tip with a cohesive zone, the length over which the adhesive stress acts; in
+ * Dugdale's model (Maugis, J. Colloid Interface Sci. 150, 243 (1992)) it is
+ *     l = (pi/4) E* w / s^2,   w the work of adhesion (the depth of the well),
+ *                              s the largest tensile stress,
+ * from the zone's stress intensity s sqrt(8 l/pi) and the energy release rate K^2/(2 E*) of
+ * a contact's edge, set to w. When l is below about one pixel (the threshold is 1), the
+ * potential's largest curvature, of order s^2/w (w/rho^2 for the exponential adhesion),
+ * exceeds the stiffness of a pixel, of order E* over dx: single pixels can rest both on and
+ * off the wall, and the discrete problem has many metastable states (lattice trapping:
+ * Thomson, Hsieh and Rana, J. Appl. Phys. 42, 3154 (1971)). No solver can then be expected
+ * to converge cleanly: a solve may stall, or converge to one of those states, which depends
+ * on the grid and the solver. The length l:
+ *   exponential adhesion (asp_system_set_adhesion)   l = (pi/4) E* rho^2/w (s = w/rho);
+ *   the exponential soft wall                          the depth w of its well and s at its
+ *                                                      inflection (with one range rho,
+ *                                                      l = 4 pi E* gamma_r rho^2/gamma_a^2);
+ *   the Lennard-Jones wall                             s = 1.466 w/z0, l = 0.366 E* z0^2/w;
+ *   the plain hard wall, a soft wall without attraction (gamma_a = 0) or whose attraction
+ *   fades no slower than its repulsion (rho_a <= rho_r/2): no well, nothing to resolve;
+ *   a user's potential: no length the library knows.
+ * *ratio = l/dx, dx the smaller pixel size, min(lx/nx, ly/ny) (lx/nx in 1D); 0 when there is
+ * no length (nothing to resolve, or a user's potential); finite (a ratio beyond the doubles
+ * is given as the largest or the smallest normal double).
+ * *resolved = 1 when the ratio is at least 1 or there is nothing to resolve; 0 when the
+ * ratio is below 1, and also for a user's potential, of which the library cannot say that
+ * the grid resolves it (ratio 0 and resolved 0 mean "unknown").
+ * The text is one sentence for a person: which length was compared, its value in pixels and
+ * in the system's units, and, when unresolved, what lengthens it (buffer rules as for
+ * asp_algorithms). ratio and resolved may be NULL; they are written also when the buffer is
+ * too small for the text. The command prints the sentence as a warning before it solves a
+ * scene that is not resolved (docs/command.md). Asks nothing of other processes on a
+ * distributed grid, and answers the same on each. */
+ASP_EXPORT int asp_system_check_resolution(const asp_system *system, double *ratio,
+                                           int *resolved, char *buffer, int64_t size,
+                                           int64_t *length);
 
 /* ============================================================================================
  * Algorithms

@@ -7,7 +7,9 @@
 #include "capi/constants.hpp"
 #include "capi/firewall.hpp"
 #include "capi/handles.hpp"
+#include "capi/text.hpp"
 #include "core/checks.hpp"
+#include "physics/resolution.hpp"
 
 using asp::capi::Agreement;
 using asp::capi::guarded;
@@ -201,6 +203,20 @@ int asp_system_get_field(const asp_system *system, int field, double *values, in
       default: throw asp::Error(asp::Status::internal, "field without a getter");
     }
     std::copy(source->begin(), source->end(), values);
+  });
+}
+
+int asp_system_check_resolution(const asp_system *system, double *ratio, int *resolved,
+                                char *buffer, int64_t size, int64_t *length) {
+  // Reads parameters only, the same on every process: nothing collective, so no agreement.
+  return guarded("asp_system_check_resolution", [&] {
+    asp::capi::require_handle(system, "system");
+    asp::require_at_least(size, 0, "size");
+    if (size > 0) asp::require_not_null(buffer, "buffer");
+    const asp::Resolution r = asp::resolution(*system->system);
+    if (ratio != nullptr) *ratio = r.ratio;
+    if (resolved != nullptr) *resolved = r.resolved ? 1 : 0;
+    asp::capi::copy_text(r.sentence, buffer, size, length);
   });
 }
 

@@ -2,6 +2,7 @@
 #include "report.hpp"
 
 #include "outputs.hpp"
+#include "resolution.hpp"
 
 namespace cli {
 namespace {
@@ -59,6 +60,7 @@ void print_scene(std::FILE *out, const Scene &scene, const Contact &contact) {
                interaction_text(scene.interaction, contact.surface.unit).c_str());
   for (const std::string &note : contact.surface.notes)
     std::fprintf(out, "note              %s\n", note.c_str());
+  print_resolution(out, contact);
 }
 
 void print_solve(std::FILE *out, const SolveReport &r, const Surface &s) {

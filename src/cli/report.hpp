@@ -17,7 +17,8 @@ const char *control_name(int control);
 // The unit of a control's value: the pressure unit or the scene's length unit.
 std::string control_unit(int control, const Surface &surface);
 
-// The scene: its surface, substrate, interaction, control and the notes made building it.
+// The scene: its surface, substrate, interaction, control and the notes made building it,
+// and a warning when its grid does not resolve its interaction (resolution.hpp).
 void print_scene(std::FILE *out, const Scene &scene, const Contact &contact);
 
 // How a solve ended and the contact's main results.

@@ -127,10 +127,12 @@ program test_api
   character(len=:), allocatable :: text, names
   character(len=2) :: small
   character(len=256) :: large
+  character(len=1024) :: sentence
   character(len=32) :: padded_name
   integer(c_int64_t) :: length, rows, iterations, count, nx, ny, pixels, i
   integer(c_int) :: status, reason, converged, dimension
-  real(c_double) :: value, error, scalar, lx, ly, penetration
+  real(c_double) :: value, error, scalar, lx, ly, penetration, expected_ratio
+  integer(c_int) :: flag
   integer :: k, unit
   ! For the generic interfaces: default integers, a rank-1 field, a string with its NUL.
   integer, parameter :: m = 32
@@ -403,8 +405,33 @@ program test_api
   call expect_status(asp_system_get(system, ASP_INTERACTION_ENERGY, scalar), ASP_OK, &
                      'asp_system_get(INTERACTION_ENERGY)')
   call expect(scalar < 0, 'the interaction energy of adhesion is negative')
+  ! ---- resolution: the cohesive zone (pi/4) E* rho^2/w over the pixel box/n, 2.01 pixels
+  ! here; 1d-12 relative, the round-off of the library's logarithms (see tests/api) ----
+  expected_ratio = atan(1d0) * modulus * 2d-3**2 / 1d-4 / (box / n)
+  text = asp_system_check_resolution_text(system, value, flag, status)
+  call expect_status(status, ASP_OK, 'asp_system_check_resolution_text')
+  call expect(abs(value - expected_ratio) <= 1d-12 * expected_ratio .and. flag == 1, &
+              'the adhesion is resolved, by its cohesive zone over the pixel')
+  call expect(index(text, 'resolved: ') == 1, 'the sentence says resolved: ' // text)
+  call expect_status(asp_system_set_adhesion(system, 1d-1, 2d-3), ASP_OK, &
+                     'asp_system_set_adhesion, 1000 times stronger')
+  call expect_status(asp_system_check_resolution(system, value, flag, sentence, &
+                                                 len(sentence), length), ASP_OK, &
+                     'asp_system_check_resolution')
+  call expect(abs(value - expected_ratio / 1000) <= 1d-12 * expected_ratio / 1000 .and. &
+              flag == 0, 'stronger adhesion is not resolved')
+  call expect(index(sentence(1:length), 'lattice trapping') > 0, &
+              'the sentence names lattice trapping: ' // sentence(1:length))
+  call expect_status(asp_system_check_resolution(system, value, flag, small, &
+                                                 int(len(small), c_int64_t), length), &
+                     ASP_ERR_SIZE_MISMATCH, 'asp_system_check_resolution in 2 characters')
+  call expect(length > len(small) .and. flag == 0, &
+              'a buffer too small still gets the length and the flag')
   call expect_status(asp_system_set_adhesion(system, 0d0, 1d0), ASP_OK, &
                      'asp_system_set_adhesion(0): the plain hard wall again')
+  text = asp_system_check_resolution_text(system, value, flag)
+  call expect(value == 0 .and. flag == 1 .and. index(text, 'nothing') > 0, &
+              'the plain hard wall has nothing to resolve: ' // text)
   call expect_status(asp_system_get(system, ASP_WORK_OF_ADHESION, scalar), ASP_OK, &
                      'asp_system_get(WORK_OF_ADHESION)')
   call expect(scalar == 0, 'no work of adhesion after setting 0')

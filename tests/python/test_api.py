@@ -177,6 +177,43 @@ class GridAndSystem(unittest.TestCase):
         self.assertIn("control", str(caught.exception))
 
 
+    def test_check_resolution(self):
+        # The cohesive zone (pi/4) E* rho^2/w over the pixel 1/32, as the header defines it;
+        # 1e-12 relative: the library forms it from logarithms (see tests/api).
+        grid = asperity.Grid(32, 32, 1.0, 1.0)
+        system = asperity.System(grid, 2.0)
+        plain = system.check_resolution()
+        self.assertEqual((plain.ratio, plain.resolved), (0.0, True))
+        self.assertIn("nothing", plain.sentence)
+        system.set_adhesion(1e-3, 1e-2)
+        resolved = system.check_resolution()
+        zone = np.pi / 4 * 2.0 * 1e-2 ** 2 / 1e-3
+        self.assertAlmostEqual(resolved.ratio / (zone * 32), 1.0, delta=1e-12)
+        self.assertTrue(resolved.resolved)
+        self.assertTrue(resolved.sentence.startswith("resolved: "))
+        system.set_adhesion(1e-1, 1e-2)
+        unresolved = system.check_resolution()
+        self.assertAlmostEqual(unresolved.ratio / (zone / 100 * 32), 1.0, delta=1e-12)
+        self.assertFalse(unresolved.resolved)
+        self.assertIn("lattice trapping", unresolved.sentence)
+        ratio, flag, sentence = unresolved  # a plain tuple too
+        self.assertEqual(flag, False)
+        # A Python potential: no known length, and it is not called.
+        calls = []
+
+        def potential(gap):
+            calls.append(1)
+            return -np.exp(-gap), np.exp(-gap), None
+        system.set_potential(potential)
+        unknown = system.check_resolution()
+        self.assertEqual((unknown.ratio, unknown.resolved), (0.0, False))
+        self.assertTrue(unknown.sentence.startswith("unknown: "))
+        self.assertEqual(calls, [])
+        system.close()
+        with self.assertRaises(asperity.NullPointerError):
+            system.check_resolution()
+
+
 class SolverApi(unittest.TestCase):
     def test_options_report_and_history(self):
         solver = asperity.Solver("lbfgsb", variable="gap", memory=7)

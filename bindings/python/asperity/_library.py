@@ -92,6 +92,7 @@ FUNCTIONS = {
     "asp_system_reset": (_int, [_ptr]),
     "asp_system_get": (_int, [_ptr, _int, _p_dbl]),
     "asp_system_get_field": (_int, [_ptr, _int, _ptr, _i64]),
+    "asp_system_check_resolution": (_int, [_ptr, _p_dbl, _p_int, _ptr, _i64, _p_i64]),
     # algorithms and solver
     "asp_algorithms": (_int, [_ptr, _i64, _p_i64]),
     "asp_solver_create": (_int, [_str, _p_ptr]),

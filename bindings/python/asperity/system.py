@@ -1,5 +1,6 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """The System: substrate, topography, interaction and current state (asp_system)."""
+import collections
 import ctypes
 
 from . import _constants as _c
@@ -7,12 +8,16 @@ from . import _names
 from ._arrays import empty_field, field_pointer
 from ._callbacks import Potential
 from ._handles import OwnedHandle
-from ._library import lib, check
+from ._library import lib, check, read_string
 from .errors import NullPointerError
 
 __all__ = ["System"]
 
 _SUBSTRATES = ("periodic", "free")
+
+#: What :meth:`System.check_resolution` says: the interaction's cohesive zone over the pixel
+#: size (0 when there is none, or none is known), whether the grid resolves it, and why.
+Resolution = collections.namedtuple("Resolution", ["ratio", "resolved", "sentence"])
 
 
 class System(OwnedHandle):
@@ -34,7 +39,8 @@ class System(OwnedHandle):
     ``asperity.SCALARS``) or integer key, and a read-only property of each name
     (``system.mean_pressure``).
     Interactions: :meth:`set_hard_wall` (default), :meth:`set_adhesion`,
-    :meth:`set_soft_wall`, :meth:`set_lennard_jones`, :meth:`set_potential`.
+    :meth:`set_soft_wall`, :meth:`set_lennard_jones`, :meth:`set_potential`; whether the
+    grid resolves them: :meth:`check_resolution`.
     """
 
     def __init__(self, grid, contact_modulus, substrate="periodic"):
@@ -146,6 +152,23 @@ class System(OwnedHandle):
     def reset(self):
         """Forgets the state (zero pressure): the next solve starts cold."""
         self._call("asp_system_reset")
+
+    def check_resolution(self):
+        """Whether the grid resolves the interaction (asp_system_check_resolution).
+
+        Returns a :class:`Resolution` ``(ratio, resolved, sentence)``: the interaction's
+        cohesive zone ``(pi/4) E* w/s^2`` (``(pi/4) E* rho^2/w`` for the exponential
+        adhesion) over the smaller pixel size; ``resolved`` False when it is below one
+        pixel, where the discrete problem has many metastable states (lattice trapping) and
+        no solver can be expected to converge cleanly, and also for a Python potential,
+        whose length is not known (``ratio`` 0); and a sentence saying what was compared.
+        Asked before any solve: it reads the parameters only and calls no potential.
+        """
+        ratio = ctypes.c_double()
+        resolved = ctypes.c_int()
+        sentence = read_string("asp_system_check_resolution", self.handle,
+                               ctypes.byref(ratio), ctypes.byref(resolved))
+        return Resolution(ratio.value, resolved.value != 0, sentence)
 
     # -- results -----------------------------------------------------------------------------
     def get(self, key):
