@@ -84,9 +84,9 @@ not_warned() {
 
   # ---- compare ----
   run compare $unresolved $at --solvers bugnicourt --repeats 1 --output compare-unresolved
-  warned "compare, unresolved" 0.0503 "^(control|bugnicourt) "
+  warned "compare, unresolved" 0.0503 "^(control|bugnicourt:gap) "
   run compare $resolved $at --solvers bugnicourt --repeats 1 --output compare-resolved
-  not_warned "compare, resolved" "^bugnicourt "
+  not_warned "compare, resolved" "^bugnicourt:gap "
 
   # ---- sweep ----
   run sweep $unresolved --quantity penetration --from 0 --to 0.002 --steps 1 --no-unload \
