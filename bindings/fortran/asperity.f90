@@ -146,7 +146,8 @@ module asperity
             asp_solver_termination, &
             asp_solver_iterations, asp_solver_evaluations, asp_solver_transforms, &
             asp_solver_final_error, asp_solver_converged, &
-            asp_solver_elapsed_seconds, asp_solver_history_length, asp_solver_get_history
+            asp_solver_elapsed_seconds, asp_solver_history_length, asp_solver_get_history, &
+            asp_solver_normal_stiffness
   public :: asp_progress_fn, asp_potential_fn
   ! Helpers (see the top of this file)
   public :: asp_string
@@ -420,6 +421,15 @@ module asperity
       type(c_ptr), value :: solver
       integer(c_int64_t), intent(out) :: length
       integer(c_int) :: asp_solver_history_length
+    end function
+    ! d(mean pressure)/d(penetration) of the state the solver's last, converged solve left in
+    ! the system (pressure per length; see asperity.h).
+    function asp_solver_normal_stiffness(solver, system, stiffness) &
+        bind(c, name='asp_solver_normal_stiffness')
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: solver, system
+      real(c_double), intent(out) :: stiffness
+      integer(c_int) :: asp_solver_normal_stiffness
     end function
   end interface
 

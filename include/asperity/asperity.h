@@ -853,6 +853,46 @@ ASP_EXPORT int asp_solver_history_length(const asp_solver *solver, int64_t *leng
 ASP_EXPORT int asp_solver_get_history(const asp_solver *solver, int column, double *values,
                                       int64_t n);
 
+/* The normal contact stiffness of the state the solver's last solve left in the system:
+ * *stiffness = d(mean pressure)/d(penetration), the derivative of the mean pressure with
+ * respect to delta along the equilibria through that state, in units of pressure per length
+ * (times the box's area, dF/d(delta), force per length; in 1D per unit length of the
+ * other direction). It is the consistent tangent of a Newton iteration on delta (a finite-
+ * element code's contact element), and, by Barber's analogy, proportional to the electrical
+ * and thermal conductance of the contact (docs/guide.md).
+ *
+ * What is differentiated: the equilibrium linearised about the state, with the set of pixels
+ * on the hard wall held (the pixels with gap 0, and for the plain hard wall also those that
+ * carry pressure). So it is the derivative with that contact set, which is the derivative
+ * itself wherever the set does not change within a small change of delta, and between the
+ * one-sided derivatives of a step where a pixel comes into or leaves contact.
+ *   plain hard wall: the pressure increment dp on the contact set C that moves the surface
+ *     by 1 there, (K^-1 dp) = 1 on C and dp = 0 off C; stiffness = mean(dp). A state without
+ *     contact has stiffness 0.
+ *   with a potential (exponential adhesion, a soft wall, Lennard-Jones, a user's potential
+ *     with or without the wall, whose phi'' the callback is asked for once): the Hessian
+ *     K + phi''(g) of the energy on the points off C, the displacement held at +1 on C.
+ * On a periodic substrate the mean pressure follows the system's K~(0) convention (full
+ * contact gives K~(0)); on a free substrate the padded (non-periodic) operator is used.
+ *
+ * Cost: conjugate gradients on the contact set (plain hard wall) or on the free points of
+ * the surface (with a potential: all of it for a soft wall, the zero-padded surface on a free
+ * substrate), one forward and one backward transform per step, to a relative residual of
+ * 1e-12; a few tens to a few hundred steps, a fraction of a solve. Work memory of a few
+ * fields. The result is accurate to about 1e-10 relative. Collective on a distributed grid.
+ *
+ * Refused with ASP_ERR_INVALID_STATE (the message says which): when the solver has not
+ * solved, or its last solve failed, did not converge, or was of another system; when the
+ * system has changed since that solve (topography, interaction, K~(0), reference pressure,
+ * asp_system_reset); and when the state is not a stable equilibrium: the Hessian restricted
+ * to the free points is not positive definite (an adhesive state at or past an instability,
+ * where the contact jumps), detected as a non-positive diagonal entry or a direction of
+ * non-positive curvature met by the conjugate gradients. ASP_ERR_CALLBACK if a user's
+ * potential fails; ASP_ERR_NULL_POINTER for a NULL argument. Nothing changes in the system or
+ * in the solver's report. */
+ASP_EXPORT int asp_solver_normal_stiffness(asp_solver *solver, asp_system *system,
+                                           double *stiffness);
+
 #ifdef __cplusplus
 }
 #endif

@@ -2,6 +2,7 @@
 // What the opaque C handles hold. The C API never exposes these types.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -26,9 +27,13 @@ struct asp_system {
   bool has_topography = false;  // asp_system_set_topography succeeded once
 };
 
+// solved_revision: the revision (asp::System::revision) of the system its last solve left,
+// 0 for none, so that asp_solver_normal_stiffness can tell whether a system is still that
+// solve's state.
 struct asp_solver {
   std::unique_ptr<asp::Solver> solver;
   mutable bool busy = false;
+  std::uint64_t solved_revision = 0;
 };
 
 namespace asp::capi {

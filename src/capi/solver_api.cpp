@@ -8,6 +8,7 @@
 #include "capi/handles.hpp"
 #include "capi/text.hpp"
 #include "core/checks.hpp"
+#include "physics/normal_stiffness.hpp"
 
 using asp::capi::Agreement;
 using asp::capi::guarded;
@@ -154,6 +155,7 @@ int asp_solver_solve(asp_solver *solver, asp_system *system, int control, double
   return guarded_on("asp_solver_solve", grid, [&](Agreement &agreement) {
     asp::capi::require_handle(solver, "solver");
     solver->solver->forget_last_solve();
+    solver->solved_revision = 0;
     asp::capi::require_handle(system, "system");
     asp::capi::require_topography(system);
     const asp::Control c = control_of(control);
@@ -166,6 +168,34 @@ int asp_solver_solve(asp_solver *solver, asp_system *system, int control, double
         scalars, "arguments 'control' and 'value', or the solver's algorithm, options or history");
     const asp::capi::BusyScope busy(system, solver);
     solver->solver->solve(*system->system, c, value);
+    solver->solved_revision = system->system->revision();
+  });
+}
+
+int asp_solver_normal_stiffness(asp_solver *solver, asp_system *system, double *stiffness) {
+  const asp::Grid *grid = system != nullptr ? &system->system->grid() : nullptr;
+  return guarded_on("asp_solver_normal_stiffness", grid, [&](Agreement &agreement) {
+    asp::capi::require_handle(solver, "solver");
+    asp::capi::require_handle(system, "system");
+    asp::require_not_null(stiffness, "stiffness");
+    const asp::SolveReport &report = solver->solver->report();
+    if (!report.available || solver->solved_revision == 0)
+      throw asp::Error(asp::Status::invalid_state,
+                       "the solver has no solve to take the stiffness of: no solve has run, or "
+                       "the last one failed");
+    if (solver->solved_revision != system->system->revision())
+      throw asp::Error(asp::Status::invalid_state,
+                       "argument 'system' is not the state the solver's last solve left: "
+                       "that solve was of another system, or this one has changed since "
+                       "(topography, interaction, K~(0), reference pressure or a reset); "
+                       "solve it again first");
+    if (!report.converged())
+      throw asp::Error(asp::Status::invalid_state,
+                       "the solver's last solve did not converge (its state is not an "
+                       "equilibrium, and has no stiffness); solve it to convergence first");
+    agreement.checks_passed();
+    const asp::capi::BusyScope busy(system, solver);
+    *stiffness = asp::normal_stiffness(*system->system).value;
   });
 }
 

@@ -2,6 +2,7 @@
 #include "physics/system.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cfloat>
 #include <cmath>
 
@@ -21,6 +22,11 @@ std::unique_ptr<Substrate> make_substrate(SubstrateKind kind, const Grid &grid,
   return std::make_unique<PeriodicHalfSpace>(grid, contact_modulus);
 }
 }  // namespace
+
+void System::changed() {
+  static std::atomic<std::uint64_t> revisions{0};
+  revision_ = ++revisions;
+}
 
 System::System(std::shared_ptr<const Grid> grid, double contact_modulus, SubstrateKind substrate)
     : grid_(std::move(grid)),
@@ -67,6 +73,7 @@ double System::reference_pressure(double control_scale) const {
 }
 
 void System::reset_state() {
+  changed();
   double *p = state_.pressure.data();
   double *g = state_.gap.data();
   const double *h = heights_.data();
@@ -137,6 +144,7 @@ void System::displacement(double *out) const {
 void System::set_adhesion(double work, double range) {
   require_non_negative(work, "work_of_adhesion");
   require_positive(range, "range");
+  changed();
   if (work == 0.0) {
     interaction_.reset(new HardWall());
     return;
@@ -150,7 +158,10 @@ void System::set_adhesion(double work, double range) {
   interaction_.reset(new ExponentialAdhesion(work, range));
 }
 
-void System::set_hard_wall() { interaction_.reset(new HardWall()); }
+void System::set_hard_wall() {
+  changed();
+  interaction_.reset(new HardWall());
+}
 
 void System::set_soft_wall(double repulsion, double repulsion_range, double attraction,
                            double attraction_range) {
@@ -206,6 +217,7 @@ void System::set_user_potential(PotentialFunction function, void *user_data, boo
 }
 
 void System::set_potential(InteractionKind kind, std::unique_ptr<Potential> potential) {
+  changed();
   interaction_.reset(new PotentialInteraction(kind, std::move(potential)));
 }
 
@@ -218,6 +230,7 @@ void System::set_k0(double k0) {
     throw Error(Status::invalid_argument,
                 "argument 'k0' is " + format_number(k0) + ": the mean displacement pbar/k0 of " +
                     "the current state would not be a finite double");
+  changed();
   substrate_->set_k0(k0);
   state_.penetration += shift;
 }

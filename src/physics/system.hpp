@@ -3,6 +3,7 @@
 // current state. The state is kept between solves so that a load sweep warm-starts.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 
 #include "core/aligned_field.hpp"
@@ -72,6 +73,7 @@ class System {
 
   // 0 selects the default; see asp_system_set_reference_pressure.
   void set_reference_pressure(double p) {
+    changed();
     reference_pressure_override_ = p;
     last_reference_pressure_ = reference_pressure(0.0);
   }
@@ -110,6 +112,12 @@ class System {
   // The displacement u = K^-1 p of the state's pressure (two transforms), into out.
   void displacement(double *out) const;
 
+  // A number that changes whenever the system is changed through its methods (topography,
+  // interaction, K~(0), reference pressure, a reset), unique among all systems of the process:
+  // whoever keeps it along with a solve's result can tell later whether the system is still
+  // the one that solve left. A solve's own changes to the state do not change it.
+  std::uint64_t revision() const { return revision_; }
+
  private:
   // The fields come first: members are made in this order, and a grid too large for memory
   // must fail at its first allocation, before the substrate walks its spectrum.
@@ -124,6 +132,8 @@ class System {
   double reference_pressure_override_ = 0.0;
   double last_reference_pressure_ = 0.0;
   bool state_held_by_solve_ = false;
+  std::uint64_t revision_ = 0;
+  void changed();
 };
 
 }  // namespace asp

@@ -131,7 +131,7 @@ program test_api
   character(len=32) :: padded_name
   integer(c_int64_t) :: length, rows, iterations, count, nx, ny, pixels, i
   integer(c_int) :: status, reason, converged, dimension
-  real(c_double) :: value, error, scalar, lx, ly, penetration, expected_ratio
+  real(c_double) :: value, error, scalar, lx, ly, penetration, expected_ratio, stiffness
   integer(c_int) :: flag
   integer :: k, unit
   ! For the generic interfaces: default integers, a rank-1 field, a string with its NUL.
@@ -672,6 +672,19 @@ program test_api
                      mean_pressure), ASP_OK, 'pk on a free system')
   call expect_status(asp_solver_converged(solver, converged), ASP_OK, 'asp_solver_converged')
   call expect(converged == 1, 'pk converges on a free system')
+  ! The stiffness of that state: the sphere's force grows faster than linearly with the
+  ! penetration (as delta^(3/2)), so dF/d(delta) exceeds F/delta. Refused for another system.
+  call expect_status(asp_solver_normal_stiffness(solver, free_system, stiffness), ASP_OK, &
+                     'asp_solver_normal_stiffness of a free system')
+  call expect_status(asp_system_get(free_system, ASP_TOTAL_FORCE, scalar), ASP_OK, &
+                     'asp_system_get(TOTAL_FORCE) of a free system')
+  call expect_status(asp_system_get(free_system, ASP_PENETRATION, value), ASP_OK, &
+                     'asp_system_get(PENETRATION) of a free system')
+  call expect(stiffness * box * box > scalar / value, 'dF/d(delta) exceeds F/delta')
+  call expect_status(asp_solver_normal_stiffness(solver, system, stiffness), &
+                     ASP_ERR_INVALID_STATE, 'asp_solver_normal_stiffness of another system')
+  call expect(index(asp_last_error_text(), 'not the state') > 0, &
+              'the message says why: ' // asp_last_error_text())
   call expect_status(asp_system_get(free_system, ASP_ELASTIC_ENERGY, scalar), ASP_OK, &
                      'asp_system_get(ELASTIC_ENERGY) of a free system')
   call expect(scalar > 0, 'a free substrate stores elastic energy')

@@ -71,6 +71,11 @@ export PKG_CONFIG_PATH=$(dirname "$pc_file")
 "$cc" -std=c99 -pedantic -Wall -Wextra -Werror -Wstrict-prototypes \
   "$source/examples/c/rough_contact.c" $(pkg-config --cflags --libs asperity) -lm "$rpath_flag" \
   -o "$work/rough_contact_pkgconfig"
+"$cc" -std=c99 -pedantic -Wall -Wextra -Werror -Wstrict-prototypes \
+  "$source/examples/c/fem_coupling.c" $(pkg-config --cflags --libs asperity) -lm "$rpath_flag" \
+  -o "$work/fem_coupling_pkgconfig"
+"$work/fem_coupling_pkgconfig" > "$work/fem_coupling.log" ||
+  { cat "$work/fem_coupling.log"; echo "fem_coupling failed"; exit 1; }
 "$work/rough_contact_pkgconfig"
 
 echo "== the README's C example with pkg-config"
@@ -90,7 +95,7 @@ cmake --build "$work/consumer" > "$work/consumer-build.log"
 "$work/consumer/rough_contact"
 
 if [ -n "$fc" ]; then
-  fortran_examples=(rough_contact adhesive_sweep user_potential)
+  fortran_examples=(rough_contact adhesive_sweep user_potential fem_coupling)
   installed_module=$(find "$prefix" -name asperity.f90 | head -n 1)
   [ -n "$installed_module" ] || { echo "the Fortran module source was not installed"; exit 1; }
   # Both ways of finding it are relative to the installed files, so that a moved prefix works.

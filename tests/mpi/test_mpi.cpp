@@ -167,6 +167,7 @@ struct Outcome {
   double scalars[4] = {0, 0, 0, 0};  // mean pressure, mean gap, contact fraction, elastic energy
   int converged = 0;
   int64_t iterations = 0;
+  double stiffness = 0.0;  // asp_solver_normal_stiffness of the converged state
 };
 
 Outcome solve(asp_grid *grid, int64_t count, const std::vector<double> &heights, const Case &c,
@@ -196,6 +197,8 @@ Outcome solve(asp_grid *grid, int64_t count, const std::vector<double> &heights,
              std::string("solve ") + c.algorithm);
   require_ok(asp_solver_converged(solver, &out.converged), "converged");
   require_ok(asp_solver_iterations(solver, &out.iterations), "iterations");
+  if (out.converged)
+    require_ok(asp_solver_normal_stiffness(solver, system, &out.stiffness), "normal stiffness");
   out.pressure.resize(static_cast<size_t>(count));
   out.gap.resize(static_cast<size_t>(count));
   require_ok(asp_system_get_field(system, ASP_FIELD_PRESSURE, data_or_null(out.pressure), count),
@@ -259,6 +262,11 @@ void solver_gives_the_serial_result(const Case &c, int64_t nx, int64_t ny) {
         1e-10 * std::fabs(serial.scalars[k]) + 1e-300)
       fail(name + ": scalar " + std::to_string(k) + " " + std::to_string(serial.scalars[k]) +
            " vs " + std::to_string(distributed.scalars[k]));
+  // The stiffness: conjugate gradients whose sums run in another order, on states that agree
+  // to 1e-10, with the same contact set.
+  if (std::fabs(serial.stiffness - distributed.stiffness) > 1e-9 * std::fabs(serial.stiffness))
+    fail(name + ": normal stiffness " + std::to_string(serial.stiffness) + " vs " +
+         std::to_string(distributed.stiffness));
 }
 
 // ---- bad input on one process --------------------------------------------------------------

@@ -116,6 +116,7 @@ FUNCTIONS = {
     "asp_solver_converged": (_int, [_ptr, _p_int]),
     "asp_solver_elapsed_seconds": (_int, [_ptr, _p_dbl]),
     "asp_solver_history_length": (_int, [_ptr, _p_i64]),
+    "asp_solver_normal_stiffness": (_int, [_ptr, _ptr, _p_dbl]),
     "asp_solver_get_history": (_int, [_ptr, _int, _ptr, _i64]),
     # asperity_mpi.h (asp_grid_create_mpi takes a C MPI_Comm, which Python cannot hold; an
     # mpi4py communicator gives its Fortran handle, MPI_Fint, an int in Open MPI and MPICH)

@@ -217,6 +217,29 @@ class Solver(OwnedHandle):
                 "state of that iteration in the system" % self.iterations, "asp_solver_solve")
         return self.report()
 
+    def normal_stiffness(self, system):
+        """d(mean pressure)/d(penetration) of the state this solver's last solve left in system.
+
+        Pressure per length (times the box area: dF/d(delta)); the consistent tangent of a
+        Newton iteration on the penetration (asp_solver_normal_stiffness). Raises
+        InvalidStateError unless that solve converged on this system and nothing changed it
+        since, or when the state is not a stable equilibrium; a potential callback that
+        raises is re-raised.
+        """
+        value = ctypes.c_double()
+        status = lib.asp_solver_normal_stiffness(self.handle, system.handle,
+                                                 ctypes.byref(value))
+        potential = system._potential
+        if status == _c.ASP_ERR_CALLBACK and potential is not None and \
+                potential.failure.exception is not None:
+            potential.failure.raise_from(
+                lib.asp_last_error_message().decode("utf-8", "replace"),
+                "asp_solver_normal_stiffness")
+        if potential is not None:
+            potential.failure.take()
+        check(status, "asp_solver_normal_stiffness")
+        return value.value
+
     def report(self):
         """The Report of the last solve (InvalidStateError before any)."""
         code = self.termination_code
