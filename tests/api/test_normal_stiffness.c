@@ -158,5 +158,5 @@ int main(void) {
   asp_system_destroy(system);
   asp_grid_destroy(grid);
   free(heights);
-  return check_summary();
+  return check_summary("api.normal_stiffness");
 }
