@@ -49,11 +49,12 @@ asp::SolveReport solve(asp::System &system, const Scene &scene, double delta, do
 // change between them, so that the derivative is the one the stiffness gives.
 struct Comparison {
   double stiffness, difference;
+  std::int64_t iterations;  // of the conjugate gradients, for the record
 };
 Comparison compare(asp::System &system, const Scene &scene, double delta, double h,
                    double tolerance, bool hard_wall = true) {
   EXPECT_TRUE(solve(system, scene, delta, tolerance).converged());
-  const double k = asp::normal_stiffness(system).value;
+  const asp::NormalStiffness stiffness = asp::normal_stiffness(system);
   const auto contacts = contact_set(system);
   const asp::ContactState saved = system.state();
   double p[2];
@@ -68,14 +69,15 @@ Comparison compare(asp::System &system, const Scene &scene, double delta, double
     }
   }
   system.state() = saved;
-  return {k, (p[0] - p[1]) / (2 * h)};
+  return {stiffness.value, (p[0] - p[1]) / (2 * h), stiffness.iterations};
 }
 
-// Central differences of the solves: truncation (h^2/6) p''' is nil while the contact set is
-// held (p is then linear in delta for the hard wall, and for a potential its curvature over h
-// is of the order of h/g, g the gaps, 1e-6 and less here); the solves' errors, at tolerance
-// 1e-12 or 1e-13 of the reference pressure P, make (1e-12 P)/h, below 1e-7 of the
-// stiffness for these h. 1e-5 relative leaves room for both.
+// Central differences of the solves: truncation (h^2/6) p''' is nil while the contact set of
+// the plain hard wall is held (p is then linear in delta), and of relative order (h/rho)^2
+// with a potential of range rho (1e-10 and less here); the solves' errors, at tolerance
+// 1e-12 or 1e-13 of the reference pressure, divided by 2h, are what remains (measured:
+// below 1e-8 of the stiffness with the hard wall, 4e-7 and 7e-7 for the soft wall, whose
+// h = 1e-5 rho is the smallest). 1e-5 relative leaves room for both.
 constexpr double fd_tolerance = 1e-5;
 
 // ---- the plain hard wall ----------------------------------------------------------------------
@@ -88,8 +90,8 @@ TEST(NormalStiffness, HardWallMatchesFiniteDifferencesOnPeriodicRoughSurface) {
     system.set_topography(h.data());
     const double delta = 0.3 * system.height_range();
     const Comparison c = compare(system, scene, delta, 1e-7 * delta, 1e-13);
-    std::printf("%s: stiffness %.10g, central difference %.10g\n", scene.algorithm, c.stiffness,
-                c.difference);
+    std::printf("%s: stiffness %.10g (%lld steps), central difference %.10g\n", scene.algorithm,
+                c.stiffness, static_cast<long long>(c.iterations), c.difference);
     EXPECT_GT(c.stiffness, 0.0);
     EXPECT_NEAR(c.stiffness, c.difference, fd_tolerance * c.stiffness) << scene.algorithm;
   }
@@ -102,6 +104,8 @@ TEST(NormalStiffness, HardWallMatchesFiniteDifferencesOnFreeSubstrate) {
   system.set_topography(h.data());
   const double delta = 0.2 * system.height_range();
   const Comparison c = compare(system, Scene{"pk", nullptr}, delta, 1e-7 * delta, 1e-13);
+  std::printf("free: stiffness %.10g (%lld steps), central difference %.10g\n", c.stiffness,
+              static_cast<long long>(c.iterations), c.difference);
   EXPECT_NEAR(c.stiffness, c.difference, fd_tolerance * c.stiffness);
 }
 
@@ -253,8 +257,9 @@ TEST(NormalStiffness, AdhesiveSphereMatchesFiniteDifferences) {
     system.set_adhesion(1e-3, 0.01);
     const double delta = 0.01;
     const Comparison c = compare(system, Scene{"bugnicourt", "gap"}, delta, 1e-7, 1e-13);
-    std::printf("adhesive sphere (%s): stiffness %.10g, central difference %.10g\n",
-                asp::substrate_name(kind), c.stiffness, c.difference);
+    std::printf("adhesive sphere (%s): stiffness %.10g (%lld steps), central difference %.10g\n",
+                asp::substrate_name(kind), c.stiffness, static_cast<long long>(c.iterations),
+                c.difference);
     EXPECT_NEAR(c.stiffness, c.difference, fd_tolerance * std::fabs(c.stiffness))
         << asp::substrate_name(kind);
   }
@@ -272,8 +277,9 @@ TEST(NormalStiffness, SoftWallMatchesFiniteDifferences) {
     const double delta = 0.2 * system.height_range();
     const Comparison c =
         compare(system, Scene{"lbfgs", nullptr}, delta, 1e-5 * range, 1e-12, false);
-    std::printf("soft wall (%s): stiffness %.10g, central difference %.10g\n",
-                asp::substrate_name(kind), c.stiffness, c.difference);
+    std::printf("soft wall (%s): stiffness %.10g (%lld steps), central difference %.10g\n",
+                asp::substrate_name(kind), c.stiffness, static_cast<long long>(c.iterations),
+                c.difference);
     EXPECT_NEAR(c.stiffness, c.difference, fd_tolerance * std::fabs(c.stiffness))
         << asp::substrate_name(kind);
   }
