@@ -878,8 +878,11 @@ ASP_EXPORT int asp_solver_get_history(const asp_solver *solver, int column, doub
  * Cost: conjugate gradients on the contact set (plain hard wall) or on the free points of
  * the surface (with a potential: all of it for a soft wall, the zero-padded surface on a free
  * substrate), one forward and one backward transform per step, to a relative residual of
- * 1e-12; a few tens to a few hundred steps, a fraction of a solve. Work memory of a few
- * fields. The result is accurate to about 1e-10 relative. Collective on a distributed grid.
+ * 1e-12: a few tens to a few hundred steps, about the cost of one solve warm-started after a
+ * small change of delta (half a solve from rest), where a central difference costs two.
+ * Work memory of a few fields over the grid (over the padded surface on a free substrate with
+ * a potential). The result is accurate to about 1e-10 relative. Collective on a distributed
+ * grid.
  *
  * Refused with ASP_ERR_INVALID_STATE (the message says which): when the solver has not
  * solved, or its last solve failed, did not converge, or was of another system; when the

@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Solver.normal_stiffness: the flat punch's 2 a E* on the free substrate, central differences
-of solves on a periodic rough surface, and the refusals (no converged solve of this system)."""
+of solves on a periodic rough surface and with a Python potential on the hard wall, the
+refusals (no converged solve of this system) and a raising potential re-raised."""
 import math
 import unittest
 
@@ -51,6 +52,41 @@ class NormalStiffness(unittest.TestCase):
         system.reset()
         with self.assertRaises(asperity.InvalidStateError):
             solver.normal_stiffness(system)
+
+    def test_python_potential_with_the_hard_wall(self):
+        # Exponential adhesion written in Python, on the hard wall, solved by lbfgsb on the gap:
+        # phi'' comes from the callback. A sphere of 32^2 pixels, cohesive zone 2.5 pixels.
+        # Central differences at h = 1e-7: the contact set is held and the solves' errors
+        # (tolerance 1e-13) make less than 1e-6 of the stiffness.
+        n, work, rho = 32, 1e-3, 0.01
+        fail = []
+
+        def adhesion(gap):
+            if fail:
+                raise ValueError("asked to fail")
+            e = np.exp(-gap / rho)
+            return -work * e, work / rho * e, -work / rho ** 2 * e
+
+        grid = asperity.Grid(n, n, 1.0, 1.0)
+        system = asperity.System(grid, 1.0)
+        system.topography = asperity.paraboloid(grid, 1.0)
+        system.set_potential(adhesion, hard_wall=True)
+        solver = asperity.Solver("lbfgsb", variable="gap", tolerance=1e-13,
+                                 max_iterations=100000)
+        delta, h = 0.01, 1e-7
+        self.assertTrue(solver.solve(system, "penetration", delta).converged)
+        k = solver.normal_stiffness(system)
+        fail.append(True)
+        with self.assertRaises(asperity.CallbackError) as caught:
+            solver.normal_stiffness(system)
+        self.assertIsInstance(caught.exception.__cause__, ValueError)
+        fail.clear()
+        self.assertEqual(solver.normal_stiffness(system), k)
+        pressures = []
+        for value in (delta + h, delta - h):
+            self.assertTrue(solver.solve(system, "penetration", value).converged)
+            pressures.append(system.mean_pressure)
+        self.assertAlmostEqual(k, (pressures[0] - pressures[1]) / (2 * h), delta=1e-5 * abs(k))
 
 
 if __name__ == "__main__":
