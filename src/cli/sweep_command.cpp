@@ -35,6 +35,15 @@ const char *const sweep_help =
     "  --no-unload       only the loading steps (control.sweep.unload = false)\n"
     "\n";
 
+// d(mean pressure)/d(penetration) of a step's state (asp_solver_normal_stiffness), or an empty
+// cell where it has none: the solve did not converge, or the state is not a stable
+// equilibrium.
+std::string stiffness_cell(asp_solver *solver, asp_system *system, bool converged) {
+  double stiffness = 0.0;
+  if (!converged || asp_solver_normal_stiffness(solver, system, &stiffness) != ASP_OK) return "";
+  return cell(stiffness);
+}
+
 }  // namespace
 
 int run_sweep(Session &session) {
@@ -63,7 +72,9 @@ int run_sweep(Session &session) {
                   column("mean_pressure", pressure_unit), column("penetration", s.unit),
                   column("mean_gap", s.unit), "contact_fraction",
                   column("total_force", pressure_unit), "iterations", column("seconds", "s"),
-                  "error", "termination"});
+                  "error", "termination",
+                  column("stiffness", s.unit.empty() ? std::string(pressure_unit) + "/length"
+                                                     : std::string(pressure_unit) + "/" + s.unit)});
   Series up{"loading", {}, {}}, down{"unloading", {}, {}};
   InterruptGuard interrupts;
   ProgressLine progress(stderr);
@@ -84,7 +95,8 @@ int run_sweep(Session &session) {
                    cell(values[k]), cell(r.mean_pressure), cell(r.penetration),
                    cell(r.mean_gap), cell(r.contact_fraction), cell(r.total_force),
                    cell(r.iterations), cell(r.seconds), cell(r.error),
-                   termination_name(r.termination)});
+                   termination_name(r.termination),
+                   stiffness_cell(session.solver.get(), contact.system.get(), r.converged())});
     Series &series = unloading ? down : up;
     series.x.push_back(r.penetration);
     series.y.push_back(r.mean_pressure);

@@ -294,18 +294,25 @@ expect "compare without --solvers lists the others as skipped" has "^skipped +lb
 run sweep "$scenes/hysteresis.toml" --output swept
 expect "the Table 5 sweep exits 0 (stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
 expect "sweep.csv has its header" [ "$(header_of swept/sweep.csv)" = \
-  "step,phase,target_penetration,mean_pressure [E* unit],penetration,mean_gap,contact_fraction,total_force [E* unit],iterations,seconds [s],error,termination" ]
+  "step,phase,target_penetration,mean_pressure [E* unit],penetration,mean_gap,contact_fraction,total_force [E* unit],iterations,seconds [s],error,termination,stiffness [E* unit/length]" ]
 expect "the sweep loads 23 steps and unloads 22" [ "$(grep -c ',loading,' swept/sweep.csv),$(grep -c ',unloading,' swept/sweep.csv)" = "23,22" ]
 # Hysteresis: at some penetration the unloading force lies clearly below the loading force.
 expect "unloading lies below loading somewhere (hysteresis)" awk -F, '
   NR > 1 && $2 == "loading" { load[$3] = $4 }
   NR > 1 && $2 == "unloading" && ($3 in load) && load[$3] - $4 > 0.005 { found = 1 }
   END { exit found ? 0 : 1 }' swept/sweep.csv
+# The stiffness d(mean pressure)/d(penetration) of the deepest step, the ripples all in
+# contact. (This scene's cohesive zone is one pixel: at some steps a pixel next to the wall has
+# phi'' below -K_ii, the state is not a stable equilibrium, and the cell is empty.)
+expect "the deepest step of the sweep is stiff" awk -F, '
+  NR > 1 && $2 == "loading" { last = $13 } END { exit last > 0 ? 0 : 1 }' swept/sweep.csv
 [ "$have_gnuplot" = yes ] && expect "sweep.png is a PNG file" is_png swept/sweep.png
 run sweep "$small" --quantity penetration --from 0 --to 0.002 --steps 2 --no-unload \
   --algorithm lbfgsb --output swept-options
 expect "a sweep from options exits 0 (stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
 expect "a sweep from options has 3 steps" [ "$(wc -l < swept-options/sweep.csv)" -eq 4 ]
+expect "every converged step of a hard-wall sweep has a positive stiffness" [ "$(awk -F, '
+  NR > 1 && $12 == "converged" && $13 > 0' swept-options/sweep.csv | wc -l)" -eq 3 ]
 bad "control" "a sweep needs control.sweep" sweep "$small"
 
 # ---- threads, FFT planning and wisdom -------------------------------------------------------
