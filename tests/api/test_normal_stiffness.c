@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: GPL-2.0-or-later */
 /* asp_solver_normal_stiffness through the public header: NULL arguments refused by name; a
  * state that is not the converged result of the solver's last solve (no solve, a solve that
- * did not converge, another system, a system changed since) refused with
+ * did not converge, another system, a system changed since by any of its setters, a refused
+ * solve) refused with
  * ASP_ERR_INVALID_STATE and the report left as it was; the stiffness of a rough hard-wall
  * contact and of a user's potential against central differences of solves at delta +- h;
  * and a failing potential callback reported as ASP_ERR_CALLBACK. */
@@ -118,6 +119,29 @@ int main(void) {
   CHECK_OK(asp_system_reset(system));
   CHECK_ERROR(asp_solver_normal_stiffness(pk, system, &again), ASP_ERR_INVALID_STATE,
               "changed since");
+  /* Every other change: the topography (even the same heights), the interaction (even the
+   * same one again). */
+  solved_mean_pressure(pk, system, delta);
+  CHECK_OK(asp_system_set_topography(system, heights, N * N));
+  CHECK_ERROR(asp_solver_normal_stiffness(pk, system, &again), ASP_ERR_INVALID_STATE,
+              "changed since");
+  solved_mean_pressure(pk, system, delta);
+  CHECK_OK(asp_system_set_hard_wall(system));
+  CHECK_ERROR(asp_solver_normal_stiffness(pk, system, &again), ASP_ERR_INVALID_STATE,
+              "changed since");
+  solved_mean_pressure(pk, system, delta);
+  CHECK_OK(asp_system_set_adhesion(system, 0.0, 1.0));
+  CHECK_ERROR(asp_solver_normal_stiffness(pk, system, &again), ASP_ERR_INVALID_STATE,
+              "changed since");
+  solved_mean_pressure(pk, system, delta);
+  CHECK_OK(asp_system_set_soft_wall(system, 1e-3, 1e-3, 0.0, 1e-3));
+  CHECK_OK(asp_system_set_hard_wall(system));
+  CHECK_ERROR(asp_solver_normal_stiffness(pk, system, &again), ASP_ERR_INVALID_STATE,
+              "changed since");
+  /* A solve that was refused leaves no solve to take the stiffness of. */
+  solved_mean_pressure(pk, system, delta);
+  CHECK_ERROR(asp_solver_solve(pk, system, ASP_CONTROL_MEAN_GAP, 0.1), ASP_ERR_UNSUPPORTED, NULL);
+  CHECK_ERROR(asp_solver_normal_stiffness(pk, system, &again), ASP_ERR_INVALID_STATE, "no solve");
 
   /* The central difference, each solve warm-started from the last. */
   solved_mean_pressure(pk, system, delta);
