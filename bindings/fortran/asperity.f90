@@ -121,6 +121,11 @@ module asperity
   ! Detrending modes
   integer(c_int), parameter, public :: ASP_DETREND_MEAN = 801, ASP_DETREND_PLANE = 802, &
       ASP_DETREND_CURVATURE = 803
+  ! Solver report keys (asp_solver_get)
+  integer(c_int), parameter, public :: ASP_REPORT_TERMINATION = 901, &
+      ASP_REPORT_CONVERGED = 902, ASP_REPORT_ITERATIONS = 903, ASP_REPORT_EVALUATIONS = 904, &
+      ASP_REPORT_TRANSFORMS = 905, ASP_REPORT_FINAL_ERROR = 906, &
+      ASP_REPORT_ELAPSED_SECONDS = 907, ASP_REPORT_HISTORY_LENGTH = 908
 
   public :: asp_status_string, asp_last_error_message, asp_version_string, asp_abi_version
   public :: asp_grid_create_1d, asp_grid_create_2d, asp_grid_destroy, asp_grid_get_shape, &
@@ -142,7 +147,7 @@ module asperity
   public :: asp_solver_create, asp_solver_destroy, asp_solver_describe, asp_solver_set_option, &
             asp_solver_set_option_string, asp_solver_get_option, asp_solver_get_option_string, &
             asp_solver_set_tolerance, asp_solver_set_max_iterations, asp_solver_set_progress, &
-            asp_solver_set_history, asp_solver_solve, asp_solver_supports, &
+            asp_solver_set_history, asp_solver_solve, asp_solver_supports, asp_solver_get, &
             asp_solver_termination, &
             asp_solver_iterations, asp_solver_evaluations, asp_solver_transforms, &
             asp_solver_final_error, asp_solver_converged, &
@@ -372,6 +377,16 @@ module asperity
       type(c_ptr), value :: solver, system
       integer(c_int), value :: control
       integer(c_int) :: asp_solver_supports
+    end function
+    ! The report of the last solve by key (ASP_REPORT_*), the one family to read it by; counts
+    ! come as exact doubles (int(value, c_int64_t) gives them back). The getters below give
+    ! the same figures one by one.
+    function asp_solver_get(solver, key, value) bind(c, name='asp_solver_get')
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: solver
+      integer(c_int), value :: key
+      real(c_double), intent(out) :: value
+      integer(c_int) :: asp_solver_get
     end function
     function asp_solver_termination(solver, reason) bind(c, name='asp_solver_termination')
       import :: c_int, c_ptr

@@ -59,24 +59,18 @@
  * ---------------------------------------------------------------------------------------------
  * Constants come in families, each with its own range of values: FFT planning 1xx,
  * normalisations 2xx, scalar results 3xx, fields 4xx, controls 5xx, history columns 6xx,
- * termination reasons 7xx, detrending modes 8xx. A value of one family passed where another
- * is expected is refused with a message naming both, never misread. Status codes are 0..99.
+ * termination reasons 7xx, detrending modes 8xx, solver report keys 9xx. A value of one
+ * family passed where another is expected is refused with a message naming both, never
+ * misread. Status codes are 0..99.
  *
  * ---------------------------------------------------------------------------------------------
  * Memory
  * ---------------------------------------------------------------------------------------------
  * A system holds 3 fields of nx*ny doubles (heights, pressure, gap): 24 bytes per pixel. A
- * solve adds the work arrays of its algorithm ("pk": 36 bytes per pixel, "bugnicourt",
- * measured: 52 on the pressure, 48 on the gap, 60 on the gap with adhesion and 64 with it
- * under mean-gap control (on the gap, one of its arrays is the system's pressure, which the
- * solve writes when it ends), "lbfgsb": on the pressure 52 + 16 per pair of its "memory", 132
- * with the default 5, on the gap 36 + 16 per pair, 116 with 5 (its search direction is the
- * system's pressure), plus index lists and a heap of breakpoints, measured 6 bytes per pixel
- * on the pressure and 24 on the gap; the unconstrained solvers, measured: "lbfgs" 240 and
- * "lbfgs_fourier" 272 with the default memory of 10 (16 per pair), "fire" 64,
- * "fire_mass_weighted" and "gfmd" 92; see docs/performance.md); a grid adds FFTW's plans. A
- * request whose arrays cannot be allocated returns ASP_ERR_OUT_OF_MEMORY and changes
- * nothing.
+ * solve adds the work arrays of its algorithm, a few tens to a few hundred bytes per pixel
+ * depending on the algorithm, its variable and its options (docs/performance.md gives each
+ * one's measured figure); a grid adds FFTW's plans. A request whose arrays cannot be
+ * allocated returns ASP_ERR_OUT_OF_MEMORY and changes nothing.
  *
  * ---------------------------------------------------------------------------------------------
  * Threads
@@ -782,9 +776,10 @@ ASP_EXPORT int asp_solver_set_history(asp_solver *solver, int on);
  * tolerance.
  *
  * Every way a solve ends returns ASP_OK with a consistent, finite state in the system (the
- * gap is the one the pressure produces); asp_solver_termination says which way it ended:
+ * gap is the one the pressure produces); asp_solver_get with ASP_REPORT_TERMINATION says
+ * which way it ended:
  *   ASP_TERMINATION_CONVERGED        the error met the tolerance (the only case in which
- *                                    asp_solver_converged reports 1);
+ *                                    ASP_REPORT_CONVERGED is 1);
  *   ASP_TERMINATION_ITERATION_LIMIT  max_iterations iterations ran;
  *   ASP_TERMINATION_CANCELLED        the progress callback returned non-zero;
  *   ASP_TERMINATION_STALLED          no progress within stall_window iterations;
@@ -811,18 +806,47 @@ ASP_EXPORT int asp_solver_solve(asp_solver *solver, asp_system *system, int cont
 ASP_EXPORT int asp_solver_supports(const asp_solver *solver, const asp_system *system,
                                    int control);
 
-/* The report of the last solve (ASP_ERR_INVALID_STATE before the first solve, or after a solve
- * that returned an error: the report then describes nothing). Iterations count the steps
- * taken; evaluations the objective or gradient evaluations and transforms the FFTs (one
- * forward or one backward transform each) up to the last iteration, as in the history, so
- * that solvers can be compared by their work as well as by their time; the error is that of
- * the state left in the system; elapsed seconds are wall-clock time of the whole call,
- * including the FFT planning a first solve on a grid may do. */
+/* The report of the last solve, one figure per key:
+ *   ASP_REPORT_TERMINATION       how the solve ended, an ASP_TERMINATION_* code (below)
+ *   ASP_REPORT_CONVERGED         1 if it ended ASP_TERMINATION_CONVERGED, else 0
+ *   ASP_REPORT_ITERATIONS        the steps taken
+ *   ASP_REPORT_EVALUATIONS       objective or gradient evaluations
+ *   ASP_REPORT_TRANSFORMS        FFTs (one forward or one backward transform each)
+ *   ASP_REPORT_FINAL_ERROR       the error of the state left in the system
+ *   ASP_REPORT_ELAPSED_SECONDS   wall-clock seconds of the whole call, including the FFT
+ *                                planning a first solve on a grid may do
+ *   ASP_REPORT_HISTORY_LENGTH    rows of the history (0 when it was not recorded)
+ * Evaluations and transforms are counted up to the last iteration, as in the history, so that
+ * solvers can be compared by their work as well as by their time.
+ *
+ * asp_solver_get is the one way to read the report: a figure added later is a new key of
+ * this family. Counts, codes and flags come as doubles that hold them exactly (every integer
+ * up to 2^53, about 9.0e15, is a double; no count of a solve comes near it), so
+ * (int64_t)value and (int)value give them back unchanged. A key of another family, or none,
+ * is refused with ASP_ERR_INVALID_ARGUMENT naming it and listing the keys; a NULL solver or
+ * value with ASP_ERR_NULL_POINTER naming it; a solver without a report with
+ * ASP_ERR_INVALID_STATE: before the first solve, or after a solve that returned an error
+ * (the report then describes nothing). */
+#define ASP_REPORT_TERMINATION 901
+#define ASP_REPORT_CONVERGED 902
+#define ASP_REPORT_ITERATIONS 903
+#define ASP_REPORT_EVALUATIONS 904
+#define ASP_REPORT_TRANSFORMS 905
+#define ASP_REPORT_FINAL_ERROR 906
+#define ASP_REPORT_ELAPSED_SECONDS 907
+#define ASP_REPORT_HISTORY_LENGTH 908
+ASP_EXPORT int asp_solver_get(const asp_solver *solver, int key, double *value);
+
+/* Termination reasons (ASP_REPORT_TERMINATION). */
 #define ASP_TERMINATION_CONVERGED 701
 #define ASP_TERMINATION_ITERATION_LIMIT 702
 #define ASP_TERMINATION_CANCELLED 703
 #define ASP_TERMINATION_STALLED 704
 #define ASP_TERMINATION_BREAKDOWN 705
+
+/* The same figures by getters of their own, kept while the ABI is 0.x for the programs that
+ * use them: each gives what asp_solver_get gives for its key, in its own type, and refuses
+ * what it refuses. New code uses asp_solver_get. */
 ASP_EXPORT int asp_solver_termination(const asp_solver *solver, int *reason);
 ASP_EXPORT int asp_solver_iterations(const asp_solver *solver, int64_t *iterations);
 ASP_EXPORT int asp_solver_evaluations(const asp_solver *solver, int64_t *evaluations);
@@ -833,7 +857,9 @@ ASP_EXPORT int asp_solver_elapsed_seconds(const asp_solver *solver, double *seco
 
 /* The history of the last solve, when asp_solver_set_history was on: one row per iteration,
  * starting with iteration 0 (the starting point). asp_solver_get_history copies one column
- * into values, n = the history length (values may be NULL when n is 0); another n is
+ * into values, n = the history length (ASP_REPORT_HISTORY_LENGTH, or
+ * asp_solver_history_length, kept as the getters above; values may be NULL when n is 0);
+ * another n is
  * refused with ASP_ERR_SIZE_MISMATCH.
  *   ASP_HISTORY_ITERATION         iteration number
  *   ASP_HISTORY_EVALUATIONS       objective or gradient evaluations so far

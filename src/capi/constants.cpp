@@ -60,6 +60,14 @@ const Constant constants[] = {
     ASP_CONSTANT(ASP_DETREND_MEAN, detrend),
     ASP_CONSTANT(ASP_DETREND_PLANE, detrend),
     ASP_CONSTANT(ASP_DETREND_CURVATURE, detrend),
+    ASP_CONSTANT(ASP_REPORT_TERMINATION, report_key),
+    ASP_CONSTANT(ASP_REPORT_CONVERGED, report_key),
+    ASP_CONSTANT(ASP_REPORT_ITERATIONS, report_key),
+    ASP_CONSTANT(ASP_REPORT_EVALUATIONS, report_key),
+    ASP_CONSTANT(ASP_REPORT_TRANSFORMS, report_key),
+    ASP_CONSTANT(ASP_REPORT_FINAL_ERROR, report_key),
+    ASP_CONSTANT(ASP_REPORT_ELAPSED_SECONDS, report_key),
+    ASP_CONSTANT(ASP_REPORT_HISTORY_LENGTH, report_key),
 };
 #undef ASP_CONSTANT
 
@@ -73,6 +81,7 @@ const char *family_name(Family family) {
     case Family::history_column: return "a history column (ASP_HISTORY_*)";
     case Family::termination: return "a termination reason (ASP_TERMINATION_*)";
     case Family::detrend: return "a detrending mode (ASP_DETREND_*)";
+    case Family::report_key: return "a solver report key (ASP_REPORT_*)";
   }
   return "unknown";
 }

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // The families of public constants (planning, normalisations, scalar keys, fields, controls,
-// history columns, termination reasons, detrending modes) and the one check every entry point uses: a value is
+// history columns, termination reasons, detrending modes, solver report keys) and the one check every entry point uses: a value is
 // accepted only where its own family is expected, and a value of another family is named as
 // such in the message, never misread.
 #pragma once
@@ -17,6 +17,7 @@ enum class Family {
   history_column,
   termination,
   detrend,
+  report_key,
 };
 
 // Throws Error(invalid_argument) naming `argument`, the value, the family it belongs to (if

@@ -207,6 +207,30 @@ int asp_solver_supports(const asp_solver *solver, const asp_system *system, int 
   });
 }
 
+int asp_solver_get(const asp_solver *solver, int key, double *value) {
+  return guarded("asp_solver_get", [&] {
+    asp::require_not_null(value, "value");
+    asp::capi::require_member(key, asp::capi::Family::report_key, "key");
+    const asp::SolveReport &r = report_of(solver);
+    // Counts go out as doubles, exact below 2^53 (the header says so).
+    switch (key) {
+      case ASP_REPORT_TERMINATION: *value = termination_code(r.termination); break;
+      case ASP_REPORT_CONVERGED: *value = r.converged() ? 1.0 : 0.0; break;
+      case ASP_REPORT_ITERATIONS: *value = static_cast<double>(r.iterations); break;
+      case ASP_REPORT_EVALUATIONS: *value = static_cast<double>(r.evaluations); break;
+      case ASP_REPORT_TRANSFORMS: *value = static_cast<double>(r.transforms); break;
+      case ASP_REPORT_FINAL_ERROR: *value = r.error; break;
+      case ASP_REPORT_ELAPSED_SECONDS: *value = r.seconds; break;
+      case ASP_REPORT_HISTORY_LENGTH:
+        *value = static_cast<double>(solver->solver->history().size());
+        break;
+      default:
+        throw asp::Error(asp::Status::internal,
+                         "report key " + std::to_string(key) + " without a figure");
+    }
+  });
+}
+
 int asp_solver_termination(const asp_solver *solver, int *reason) {
   return guarded("asp_solver_termination", [&] {
     asp::require_not_null(reason, "reason");

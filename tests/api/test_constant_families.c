@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Constant families (asperity.h, "Constants"): FFT planning 1xx, normalisations 2xx, scalar
- * results 3xx, fields 4xx, controls 5xx, history columns 6xx, termination reasons 7xx, status
- * codes 0..99. Every constant lies in its family's range and no two are equal; every call that
+ * results 3xx, fields 4xx, controls 5xx, history columns 6xx, termination reasons 7xx,
+ * detrending modes 8xx, solver report keys 9xx, status codes 0..99. Every constant lies in its family's range and no two are equal; every call that
  * takes a constant of one family refuses the constants of every other family, and values of
  * no family, with ASP_ERR_INVALID_ARGUMENT and a message naming the argument and both
  * families, and changes nothing. */
@@ -10,11 +10,23 @@
 
 #include "check.h"
 
-enum { PLANNING, NORMALISATION, SCALAR, FIELD, CONTROL, COLUMN, TERMINATION, FAMILIES };
+enum {
+  PLANNING,
+  NORMALISATION,
+  SCALAR,
+  FIELD,
+  CONTROL,
+  COLUMN,
+  TERMINATION,
+  DETREND,
+  REPORT,
+  FAMILIES
+};
 
 /* How a message names each family: the family's own word, as the header's list has it. */
 static const char *const family_word[FAMILIES] = {
-    "planning", "normalisation", "scalar", "field", "control", "history column", "termination"};
+    "planning", "normalisation", "scalar",     "field",     "control",
+    "history column", "termination", "detrending", "report key"};
 
 typedef struct {
   int value;
@@ -63,6 +75,17 @@ static const Constant constants[] = {
     C(ASP_TERMINATION_CANCELLED, TERMINATION),
     C(ASP_TERMINATION_STALLED, TERMINATION),
     C(ASP_TERMINATION_BREAKDOWN, TERMINATION),
+    C(ASP_DETREND_MEAN, DETREND),
+    C(ASP_DETREND_PLANE, DETREND),
+    C(ASP_DETREND_CURVATURE, DETREND),
+    C(ASP_REPORT_TERMINATION, REPORT),
+    C(ASP_REPORT_CONVERGED, REPORT),
+    C(ASP_REPORT_ITERATIONS, REPORT),
+    C(ASP_REPORT_EVALUATIONS, REPORT),
+    C(ASP_REPORT_TRANSFORMS, REPORT),
+    C(ASP_REPORT_FINAL_ERROR, REPORT),
+    C(ASP_REPORT_ELAPSED_SECONDS, REPORT),
+    C(ASP_REPORT_HISTORY_LENGTH, REPORT),
 };
 #undef C
 #define N_CONSTANTS ((int)(sizeof constants / sizeof constants[0]))
@@ -82,7 +105,7 @@ static const int statuses[] = {ASP_OK,
 /* Values that belong to no family, inside and outside the families' ranges. */
 static const int strays[] = {INT_MIN, -701, -1, 0, 1, 2, 99, 100, 104, 199, 200,
                              203, 300, 316, 399, 400, 405, 500, 504, 600, 608,
-                             700, 706, 800, 1000, INT_MAX};
+                             700, 706, 800, 804, 900, 909, 1000, INT_MAX};
 #define N_STRAYS ((int)(sizeof strays / sizeof strays[0]))
 
 #define NX 8
@@ -108,6 +131,8 @@ static const Taker takers[] = {
     {"asp_system_get_field", "'field'", FIELD},
     {"asp_solver_solve", "'control'", CONTROL},
     {"asp_solver_get_history", "'column'", COLUMN},
+    {"asp_topography_detrend", "'mode'", DETREND},
+    {"asp_solver_get", "'key'", REPORT},
 };
 #define N_TAKERS ((int)(sizeof takers / sizeof takers[0]))
 
@@ -121,6 +146,15 @@ static int call_with(int taker, int value, asp_grid *fresh_grid) {
     case 2: return asp_system_get(scene, value, &scalar);
     case 3: return asp_system_get_field(scene, value, out, N);
     case 4: return asp_solver_solve(solver, scene, value, 0.01);
+    case 6: {
+      int i;
+      for (i = 0; i < N; ++i) out[i] = heights[i];
+      return asp_topography_detrend(grid, value, out, N);
+    }
+    case 7:
+      /* A solve first, so that only the key can be wrong. */
+      asp_solver_solve(solver, scene, ASP_CONTROL_MEAN_PRESSURE, 0.01);
+      return asp_solver_get(solver, value, &scalar);
     default: {
       /* A solve with a history first, so that only the column can be wrong. */
       int64_t length = 0;

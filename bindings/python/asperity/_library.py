@@ -108,6 +108,7 @@ FUNCTIONS = {
     "asp_solver_set_history": (_int, [_ptr, _int]),
     "asp_solver_solve": (_int, [_ptr, _ptr, _int, _dbl]),
     "asp_solver_supports": (_int, [_ptr, _ptr, _int]),
+    "asp_solver_get": (_int, [_ptr, _int, _p_dbl]),
     "asp_solver_termination": (_int, [_ptr, _p_int]),
     "asp_solver_iterations": (_int, [_ptr, _p_i64]),
     "asp_solver_evaluations": (_int, [_ptr, _p_i64]),

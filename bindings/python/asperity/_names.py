@@ -3,7 +3,7 @@
 
 The header groups its integer constants in families by range: status codes 0..99, FFT
 planning 1xx, normalisations 2xx, scalar results 3xx, fields 4xx, controls 5xx, history
-columns 6xx, termination reasons 7xx, detrending modes 8xx. Each family here is derived from
+columns 6xx, termination reasons 7xx, detrending modes 8xx, solver report keys 9xx. Each family here is derived from
 the generated constants, so a constant added to the header gets its names without an edit:
 
 * the constant itself, ``ASP_CONTROL_PENETRATION`` (502);
@@ -12,7 +12,7 @@ the generated constants, so a constant added to the header gets its names withou
   prefix, in lower case: ``"penetration"`` (controls), ``"pressure"`` (fields), ``"error"``
   (history columns), ``"converged"`` (termination reasons), ``"plane"`` (detrending),
   ``"measure"`` (FFT planning), ``"rms_height"`` (normalisations), ``"mean_pressure"``
-  (scalar results, whose names share no prefix). The name without ``ASP_`` alone is accepted
+  (scalar results, whose names share no prefix), ``"iterations"`` (solver report keys). The name without ``ASP_`` alone is accepted
   as well: ``"control_penetration"``, ``"rms_height"`` (the same as ``"height"``).
 
 Wherever a method takes one of these, it accepts the string, the integer constant, or any
@@ -23,6 +23,7 @@ from . import _constants as _c
 _FAMILY_TITLES = {
     1: "FFT planning", 2: "normalisation", 3: "scalar result", 4: "field", 5: "control",
     6: "history column", 7: "termination reason", 8: "detrending mode",
+    9: "solver report key",
 }
 
 
@@ -54,7 +55,8 @@ _FULL_NAMES = {number: frozenset(constants) for number, constants in _families()
 #: family number -> {integer value: string name}
 NAMES_OF = {number: {v: k for k, v in names.items()} for number, names in FAMILIES.items()}
 
-FFT_PLANNING, NORMALISATION, SCALAR, FIELD, CONTROL, HISTORY, TERMINATION, DETREND = range(1, 9)
+(FFT_PLANNING, NORMALISATION, SCALAR, FIELD, CONTROL, HISTORY, TERMINATION, DETREND,
+ REPORT) = range(1, 10)
 
 #: The module-level names without ASP_ (CONTROL_PENETRATION = 502, ...), for every constant
 #: of asperity.h. Status codes keep their ASP_ names only (OK and ERR_* are exported too).

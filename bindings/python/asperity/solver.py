@@ -46,9 +46,11 @@ class Solver(OwnedHandle):
     :meth:`describe` for the algorithm's options). ``asperity.algorithms()`` lists the names.
     One solver may solve many systems; the report and history are those of its last solve.
 
-    :meth:`solve` returns a :class:`Report`; the same values are properties of the solver
+    :meth:`solve` returns a :class:`Report`; each figure of the report is read by name with
+    :meth:`get` (asp_solver_get: ``solver.get("iterations")``, the names of
+    ``asperity.REPORT_KEYS``), and the same values are properties of the solver
     (termination, iterations, evaluations, transforms, final_error, converged,
-    elapsed_seconds), which raise InvalidStateError before the first solve.
+    elapsed_seconds, history_length), which raise InvalidStateError before the first solve.
     """
 
     def __init__(self, algorithm="pk", **options):
@@ -246,6 +248,31 @@ class Solver(OwnedHandle):
         return Report(_names.name_of(_names.TERMINATION, code), code, self.iterations,
                       self.evaluations, self.transforms, self.final_error, self.converged,
                       self.elapsed_seconds)
+
+    #: The report keys whose figures are whole numbers: get() gives them as int.
+    _WHOLE_REPORT_KEYS = frozenset(
+        _names.FAMILIES[_names.REPORT][name]
+        for name in ("termination", "converged", "iterations", "evaluations", "transforms",
+                     "history_length"))
+
+    def get(self, key):
+        """A figure of the last solve's report by name ("iterations", ...) or ASP_REPORT_* key.
+
+        asp_solver_get. Counts, the termination code and the converged flag come back as int
+        (the library gives them as doubles that hold them exactly), the final error and the
+        elapsed seconds as float. Raises InvalidStateError before the first solve, or after a
+        solve that returned an error; InvalidArgumentError for a name or key of no report
+        figure.
+        """
+        code = _names.resolve(_names.REPORT, key, "key")
+        value = ctypes.c_double()
+        check(lib.asp_solver_get(self.handle, code, ctypes.byref(value)), "asp_solver_get")
+        return int(value.value) if code in self._WHOLE_REPORT_KEYS else value.value
+
+    @property
+    def history_length(self):
+        """Rows of the last solve's history (0 when it was not recorded)."""
+        return self.get("history_length")
 
     def _get(self, function, ctype):
         value = ctype()
