@@ -173,43 +173,6 @@ void PaddedRealFft::surface_backward(Complex *spectrum, double *surface) const {
   fftw_execute_dft_c2r(static_cast<fftw_plan>(rows_c2r_), s + columns * ny_, surface + width * ny_);
 }
 
-HalfComplexFft::HalfComplexFft(std::int64_t nx, std::int64_t ny, FftPlanning planning,
-                               int threads) {
-  int dims[2];
-  const int rank = dimensions(nx, ny, dims);
-  const fftw_r2r_kind forward_kinds[2] = {FFTW_R2HC, FFTW_R2HC};
-  const fftw_r2r_kind backward_kinds[2] = {FFTW_HC2R, FFTW_HC2R};
-  Field in(static_cast<std::size_t>(nx * ny)), out(static_cast<std::size_t>(nx * ny));
-
-  std::lock_guard<std::mutex> lock(fft_planner::mutex());
-  const fft_planner::PlannerThreads planner_threads(threads, nx * ny);
-  const fft_planner::PlanningTimeLimit time_limit(planning);
-  const unsigned flags = fft_planner::flags_of(planning);
-  fftw_plan r2hc = fft_planner::plan(flags, [&](unsigned f) {
-    return fftw_plan_r2r(rank, dims, in.data(), out.data(), forward_kinds, f);
-  });
-  fftw_plan hc2r = fft_planner::plan(flags | FFTW_DESTROY_INPUT, [&](unsigned f) {
-    return fftw_plan_r2r(rank, dims, out.data(), in.data(), backward_kinds, f);
-  });
-  require_plans(r2hc, hc2r);
-  r2hc_ = r2hc;
-  hc2r_ = hc2r;
-}
-
-HalfComplexFft::~HalfComplexFft() {
-  std::lock_guard<std::mutex> lock(fft_planner::mutex());
-  destroy(r2hc_);
-  destroy(hc2r_);
-}
-
-void HalfComplexFft::forward(const double *real, double *coefficients) const {
-  fftw_execute_r2r(static_cast<fftw_plan>(r2hc_), const_cast<double *>(real), coefficients);
-}
-
-void HalfComplexFft::backward(double *coefficients, double *real) const {
-  fftw_execute_r2r(static_cast<fftw_plan>(hc2r_), coefficients, real);
-}
-
 namespace {
 // The process's FFTW wisdom, set aside while it lives (under the planner lock) and put back
 // afterwards. FFTW lets the wisdom of more rigorous planning (the grids' FFTW_MEASURE plans)

@@ -90,25 +90,6 @@ class PaddedRealFft final : public PaddedTransform {
   void *rows_c2r_ = nullptr;
 };
 
-// The real half-complex transform along each axis (FFTW's R2HC and HC2R): nx*ny real
-// coefficients, x fastest like the field. Along an axis of n points, entry k holds the real
-// part of frequency k for k <= n/2 and the imaginary part of frequency n - k above.
-class HalfComplexFft {
- public:
-  HalfComplexFft(std::int64_t nx, std::int64_t ny, FftPlanning planning, int threads = 1);
-  ~HalfComplexFft();
-  HalfComplexFft(const HalfComplexFft &) = delete;
-  HalfComplexFft &operator=(const HalfComplexFft &) = delete;
-
-  void forward(const double *real, double *coefficients) const;
-  // Destroys the coefficients it reads.
-  void backward(double *coefficients, double *real) const;
-
- private:
-  void *r2hc_ = nullptr;
-  void *hc2r_ = nullptr;
-};
-
 // One-dimensional backward transforms along one axis at a time, complex in place (LineFft)
 // and half-complex to real (RealLineFft), planned with FFTW_ESTIMATE and without the
 // process's wisdom: the plan, and so the rounding, depends only on the length, the same on

@@ -153,13 +153,6 @@ const RealFft &Grid::real_fft(std::int64_t nx, std::int64_t ny) const {
   return *found->second;
 }
 
-const HalfComplexFft &Grid::half_complex_fft() const {
-  require_serial("the half-complex transform");
-  std::lock_guard<std::mutex> lock(plans_mutex_);
-  if (!half_complex_plan_) half_complex_plan_.reset(new HalfComplexFft(nx_, ny_, planning_, threads_));
-  return *half_complex_plan_;
-}
-
 const PaddedTransform &Grid::padded_fft() const {
   std::lock_guard<std::mutex> lock(plans_mutex_);
   if (!padded_plan_) {
@@ -180,7 +173,7 @@ SpectralLayout Grid::padded_spectrum() const {
 
 void Grid::set_fft_planning(FftPlanning planning) {
   std::lock_guard<std::mutex> lock(plans_mutex_);
-  if (!real_plans_.empty() || half_complex_plan_ || padded_plan_ || distributed_plan_)
+  if (!real_plans_.empty() || padded_plan_ || distributed_plan_)
     throw Error(Status::invalid_state,
                 "the grid's FFT plans already exist; set the planning right after creating it");
   planning_ = planning;
@@ -191,7 +184,7 @@ void Grid::set_threads(int threads) {
     throw Error(Status::invalid_argument,
                 "argument 'threads' is " + std::to_string(threads) + ": must be at least 1");
   std::lock_guard<std::mutex> lock(plans_mutex_);
-  if (!real_plans_.empty() || half_complex_plan_ || padded_plan_ || distributed_plan_)
+  if (!real_plans_.empty() || padded_plan_ || distributed_plan_)
     throw Error(Status::invalid_state,
                 "the grid's FFT plans already exist; set the threads right after creating it");
   threads_ = threads;
@@ -209,8 +202,7 @@ FftPlanning Grid::fft_planning() const {
 
 bool Grid::has_fft_plans() const {
   std::lock_guard<std::mutex> lock(plans_mutex_);
-  return !real_plans_.empty() || half_complex_plan_ != nullptr || padded_plan_ != nullptr ||
-         distributed_plan_ != nullptr;
+  return !real_plans_.empty() || padded_plan_ != nullptr || distributed_plan_ != nullptr;
 }
 
 }  // namespace asp

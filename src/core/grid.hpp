@@ -75,7 +75,6 @@ class Grid {
   // distributed grid).
   const RealTransform &fft() const;
   const RealFft &real_fft(std::int64_t nx, std::int64_t ny) const;
-  const HalfComplexFft &half_complex_fft() const;
   // The grid's box on the grid zero-padded to 2nx x 2ny (2D grids; distributed with the
   // grid), and the layout of its spectrum: the half spectrum of the padded grid, by rows on a
   // serial grid, on a distributed one this process's columns kx of it, transposed.
@@ -110,7 +109,6 @@ class Grid {
   mutable std::mutex plans_mutex_;
   mutable std::unique_ptr<RealTransform> distributed_plan_;
   mutable std::map<std::tuple<std::int64_t, std::int64_t>, std::unique_ptr<RealFft>> real_plans_;
-  mutable std::unique_ptr<HalfComplexFft> half_complex_plan_;
   mutable std::unique_ptr<PaddedTransform> padded_plan_;
   LocalReductions reductions_;
 };

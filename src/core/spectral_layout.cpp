@@ -11,9 +11,7 @@ SpectralLayout::SpectralLayout(Packing packing, std::int64_t nx, std::int64_t ny
       lx_(lx),
       ly_(ly),
       first_line_(first_line),
-      line_length_(packing == Packing::half_spectrum              ? nx / 2 + 1
-                   : packing == Packing::transposed_half_spectrum ? ny
-                                                                  : nx),
+      line_length_(packing == Packing::half_spectrum ? nx / 2 + 1 : ny),
       second_single_(nx % 2 == 0 && nx > 1 && packing != Packing::transposed_half_spectrum
                          ? nx / 2
                          : 0) {

@@ -11,11 +11,7 @@
 //  - transposed_half_spectrum: the same entries stored column by column, S[ky + ny*kx], as
 //    FFTW-MPI's transposed r2c output leaves them (a distributed grid's spectrum: each
 //    process holds columns kx of it).
-//  - half_complex: FFTW's R2HC along each axis, nx*ny real coefficients, x fastest. Along an
-//    axis of n points, index k carries frequency k (k <= n/2) or n - k (above); indices 0 and,
-//    for even n, n/2 have weight 1, the others 2; a 2D entry's weight is the product. Then
-//    sum_i f_i^2 = (1/N) sum_k weight_k c_k^2, N = nx*ny.
-// In all, sum over entries of weight * |entry|^2 equals N times the sum of squares of the
+// In both, sum over entries of weight * |entry|^2 equals N times the sum of squares of the
 // field (Parseval), and K~(|q|) is diagonal.
 //
 // A layout stores lines: rows (ky) of the row packings, columns (kx) of the transposed one. On
@@ -32,7 +28,7 @@
 
 namespace asp {
 
-enum class Packing { half_spectrum, transposed_half_spectrum, half_complex };
+enum class Packing { half_spectrum, transposed_half_spectrum };
 
 class SpectralLayout {
  public:
@@ -42,7 +38,7 @@ class SpectralLayout {
                  std::int64_t lines = -1, std::int64_t first_line = 0);
 
   Packing packing() const { return packing_; }
-  // Number of stored entries (complex for the half spectra, real for half_complex).
+  // Number of stored (complex) entries.
   std::int64_t size() const { return line_length_ * lines_; }
   // Whether stored entry k is the q = 0 mode (the mean), which only one process holds.
   bool is_mean(std::int64_t k) const { return k == 0 && first_line_ == 0; }
@@ -71,7 +67,7 @@ class SpectralLayout {
             // Every entry of a row counts twice, minus the edge entries.
             sum = 2.0 * sum - value(start);
             if (second_single_ > 0) sum -= value(start + second_single_);
-            total += (packing_ == Packing::half_complex ? axis_weight(line, ny_) : 1.0) * sum;
+            total += sum;
           }
           part = total;
         },
@@ -117,25 +113,22 @@ class SpectralLayout {
     for (std::int64_t local = 0; local < lines_; ++local) {
       const std::int64_t ky = first_line_ + local;
       const double qy = wavenumber(axis_frequency(ky, ny_), ly_);
-      const double wy = packing_ == Packing::half_complex ? axis_weight(ky, ny_) : 1.0;
       const std::int64_t start = line_length_ * local;
       for (std::int64_t kx = 0; kx < line_length_; ++kx) {
-        const double qx = wavenumber(packing_ == Packing::half_complex ? axis_frequency(kx, nx_)
-                                                                        : kx,
-                                     lx_);
-        visit(start + kx, std::sqrt(qx * qx + qy * qy), wy * axis_weight(kx, nx_));
+        const double qx = wavenumber(kx, lx_);
+        visit(start + kx, std::sqrt(qx * qx + qy * qy), axis_weight(kx, nx_));
       }
     }
   }
 
  private:
-  // Frequency (number of periods over the box) carried by index k of an axis of n points,
-  // for the full complex and for the half-complex packing alike: k up to n/2, n - k above.
+  // Frequency (number of periods over the box) carried by index k of an axis of n points
+  // stored in full (y of the row packings): k up to n/2, n - k above.
   static std::int64_t axis_frequency(std::int64_t k, std::int64_t n) {
     return k <= n / 2 ? k : n - k;
   }
-  // Index 0 and an even axis's Nyquist index stand for one mode; the others for two (in
-  // r2c only along x; in R2HC along each axis).
+  // Index 0 and an even axis's Nyquist index stand for one mode; the others for two (r2c
+  // halves the spectrum along x only).
   static double axis_weight(std::int64_t k, std::int64_t n) {
     return k == 0 || (n % 2 == 0 && 2 * k == n) ? 1.0 : 2.0;
   }
@@ -149,7 +142,7 @@ class SpectralLayout {
   std::int64_t lines_, first_line_;
   std::int64_t line_length_;
   // Index in a row of the entry besides 0 that stands for one mode along x (the Nyquist
-  // frequency of an even nx: last of an r2c row, middle of an R2HC row), or 0 if none.
+  // frequency of an even nx, the last of an r2c row), or 0 if none.
   std::int64_t second_single_;
 };
 

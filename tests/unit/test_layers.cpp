@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // The core layers every solver stands on: the spectral layout (|q| and Parseval weights of
-// both packings), the element-wise loop helper, and the plan cache of a grid.
+// the half spectrum), the element-wise loop helper, and the plan cache of a grid.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -26,8 +26,8 @@ std::string shape_name(const ::testing::TestParamInfo<Shape> &info) {
 
 class Layout : public ::testing::TestWithParam<Shape> {};
 
-// Parseval: sum_k weight_k |F_k|^2 = N sum_i f_i^2, for the r2c half spectrum and for the
-// per-axis half-complex packing, whatever the parity of each axis. Exact up to rounding.
+// Parseval: sum_k weight_k |F_k|^2 = N sum_i f_i^2, for the r2c half spectrum, whatever the
+// parity of each axis. Exact up to rounding.
 TEST_P(Layout, WeightsSatisfyParseval) {
   const Shape s = GetParam();
   auto grid = asp_test::grid_2d(s.nx, s.ny, 1.3, 0.7);
@@ -49,28 +49,10 @@ TEST_P(Layout, WeightsSatisfyParseval) {
   const double by_rows = half.weighted_sum([&](std::int64_t k) { return std::norm(spectrum[k]); });
   EXPECT_NEAR(by_visit, n * sum_squares, 1e-12 * n * sum_squares);
   EXPECT_NEAR(by_rows, n * sum_squares, 1e-12 * n * sum_squares);
-
-  asp::Field coefficients = grid->make_field();
-  grid->half_complex_fft().forward(f.data(), coefficients.data());
-  const asp::SpectralLayout packed(asp::Packing::half_complex, s.nx, s.ny, 1.3, 0.7);
-  ASSERT_EQ(packed.size(), grid->n_pixels());
-  double packed_visit = 0.0;
-  packed.for_each([&](std::int64_t k, double, double w) {
-    packed_visit += w * coefficients[k] * coefficients[k];
-  });
-  const double packed_rows =
-      packed.weighted_sum([&](std::int64_t k) { return coefficients[k] * coefficients[k]; });
-  EXPECT_NEAR(packed_visit, n * sum_squares, 1e-12 * n * sum_squares);
-  EXPECT_NEAR(packed_rows, n * sum_squares, 1e-12 * n * sum_squares);
-
-  // The inverse transforms undo the forward ones (times N).
-  asp::Field back = grid->make_field();
-  grid->half_complex_fft().backward(coefficients.data(), back.data());
-  for (std::size_t i = 0; i < f.size(); ++i) ASSERT_NEAR(back[i], n * f[i], 1e-10 * n);
 }
 
 // A single mode cos(2 pi (a x/lx + b y/ly)) puts all its power on entries whose |q| is that
-// of the mode, in both packings: checks the wavevector each entry is given.
+// of the mode: checks the wavevector each entry is given.
 TEST_P(Layout, EntriesCarryTheWavevectorOfTheirMode) {
   const Shape s = GetParam();
   const double lx = 1.3, ly = 0.7;
@@ -87,13 +69,6 @@ TEST_P(Layout, EntriesCarryTheWavevectorOfTheirMode) {
   grid->half_spectrum().for_each([&](std::int64_t k, double qk, double) {
     if (std::abs(spectrum[k]) > 1e-8 * grid->n_pixels()) EXPECT_NEAR(qk, q, 1e-12 * q) << k;
   });
-  asp::Field coefficients = grid->make_field();
-  grid->half_complex_fft().forward(f.data(), coefficients.data());
-  asp::SpectralLayout(asp::Packing::half_complex, s.nx, s.ny, lx, ly)
-      .for_each([&](std::int64_t k, double qk, double) {
-        if (std::fabs(coefficients[k]) > 1e-8 * grid->n_pixels())
-          EXPECT_NEAR(qk, q, 1e-12 * q) << k;
-      });
 }
 
 INSTANTIATE_TEST_SUITE_P(Shapes, Layout,
@@ -128,7 +103,6 @@ TEST(PlanCache, OnePlanPerShapeAndKindIncludingThePaddedShape) {
   const asp::RealFft &padded = grid->real_fft(24, 20);
   EXPECT_NE(&own, &padded);
   EXPECT_EQ(&padded, &grid->real_fft(24, 20));
-  EXPECT_EQ(&grid->half_complex_fft(), &grid->half_complex_fft());
   EXPECT_TRUE(grid->has_fft_plans());
   EXPECT_THROW(grid->set_fft_planning(asp::FftPlanning::measure), asp::Error);
 
