@@ -24,9 +24,8 @@ int main(void) {
   asp_system *system = NULL;
   asp_solver *solver = NULL;
   double *heights = NULL;
-  double fraction = 0.0, penetration = 0.0, error = 0.0;
-  int64_t iterations = 0;
-  int converged = 0, status = 1;
+  double fraction = 0.0, penetration = 0.0, error = 0.0, iterations = 0.0, converged = 0.0;
+  int status = 1;
 
   if (failed(asp_grid_create_2d(n, n, length, length, &grid), "asp_grid_create_2d")) goto done;
   heights = malloc((size_t)(n * n) * sizeof *heights);
@@ -47,15 +46,15 @@ int main(void) {
 
   asp_system_get(system, ASP_CONTACT_FRACTION, &fraction);
   asp_system_get(system, ASP_PENETRATION, &penetration);
-  asp_solver_iterations(solver, &iterations);
-  asp_solver_final_error(solver, &error);
-  asp_solver_converged(solver, &converged);
+  asp_solver_get(solver, ASP_REPORT_ITERATIONS, &iterations); /* counts: exact doubles */
+  asp_solver_get(solver, ASP_REPORT_FINAL_ERROR, &error);
+  asp_solver_get(solver, ASP_REPORT_CONVERGED, &converged);
   printf("asperity %s\n", asp_version_string());
   printf("contact fraction %.5f at mean pressure %g (kappa = %.3f)\n", fraction, mean_pressure,
          fraction * modulus * rms_slope / mean_pressure);
-  printf("penetration %.6g, %lld iterations, error %.2e, %s\n", penetration,
-         (long long)iterations, error, converged ? "converged" : "not converged");
-  status = converged ? 0 : 1;
+  printf("penetration %.6g, %.0f iterations, error %.2e, %s\n", penetration, iterations, error,
+         converged != 0.0 ? "converged" : "not converged");
+  status = converged != 0.0 ? 0 : 1;
 
 done:
   asp_solver_destroy(solver);
