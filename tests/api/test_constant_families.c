@@ -1,10 +1,11 @@
 /* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Constant families (asperity.h, "Constants"): FFT planning 1xx, normalisations 2xx, scalar
  * results 3xx, fields 4xx, controls 5xx, history columns 6xx, termination reasons 7xx,
- * detrending modes 8xx, solver report keys 9xx, status codes 0..99. Every constant lies in its family's range and no two are equal; every call that
- * takes a constant of one family refuses the constants of every other family, and values of
- * no family, with ASP_ERR_INVALID_ARGUMENT and a message naming the argument and both
- * families, and changes nothing. */
+ * detrending modes 8xx, solver report keys 9xx, status codes 0..99. Every constant lies in its
+ * family's range and no two are equal; every call that takes a constant of one family refuses
+ * the constants of every other family, and values of no family, with
+ * ASP_ERR_INVALID_ARGUMENT and a message naming the argument and both families, and changes
+ * nothing. */
 #include <limits.h>
 #include <stdint.h>
 

@@ -11,7 +11,7 @@ asperity_mpi.h is read next to it, whether or not the library was built with MPI
   the Fortran handle (asp_grid_create_mpi_f, from mpi4py's comm.py2f()): that twin must be
   declared and bound instead;
 * every #define ASP_<NAME> <integer> must be asperity.ASP_<NAME> with the same value, and
-  asperity.<NAME> too; each of a family (1xx..8xx) must be accepted by name where methods
+  asperity.<NAME> too; each of a family (1xx..9xx) must be accepted by name where methods
   take it; each status ASP_ERR_* must have its exception class.
 
 A function or constant added to the header without its binding makes test_header_is_covered

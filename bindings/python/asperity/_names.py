@@ -3,8 +3,9 @@
 
 The header groups its integer constants in families by range: status codes 0..99, FFT
 planning 1xx, normalisations 2xx, scalar results 3xx, fields 4xx, controls 5xx, history
-columns 6xx, termination reasons 7xx, detrending modes 8xx, solver report keys 9xx. Each family here is derived from
-the generated constants, so a constant added to the header gets its names without an edit:
+columns 6xx, termination reasons 7xx, detrending modes 8xx, solver report keys 9xx. Each
+family here is derived from the generated constants, so a constant added to the header gets
+its names without an edit:
 
 * the constant itself, ``ASP_CONTROL_PENETRATION`` (502);
 * the nicer module-level name without ``ASP_``: ``CONTROL_PENETRATION``;
