@@ -86,8 +86,9 @@ PrimalFormulation::PrimalFormulation(System &system, Control control, double val
     // Under load control the unknowns there are the displacement less the penetration.
     const double offset =
         control == Control::mean_pressure ? state_.penetration * per_length : 0.0;
-    loops::for_each(unknowns_ - n_,
-                    [&](std::int64_t i) { outside[n_ + i] = outside[n_ + i] * per_length - offset; });
+    loops::for_each(unknowns_ - n_, [&](std::int64_t i) {
+      outside[n_ + i] = outside[n_ + i] * per_length - offset;
+    });
     std::copy(state_.gap.data(), state_.gap.data() + n_, surface_unknowns_.data());
   }
   // A pixel that carries compressive pressure is in contact, on the wall: its stored gap is
@@ -149,7 +150,8 @@ double PrimalFormulation::elastic_pressure(const double *x, double *out) {
   double sum = 0.0;
   if (control_ == Control::mean_pressure) {
     sum = loops::sum(grid_.reductions(), n_, displacement) +
-          loops::sum(grid_.reductions(), unknowns_ - n_, [&](std::int64_t i) { return x[n_ + i]; });
+          loops::sum(grid_.reductions(), unknowns_ - n_,
+                     [&](std::int64_t i) { return x[n_ + i]; });
   } else {
     loops::for_each(n_, displacement);
   }
@@ -258,7 +260,8 @@ bool PrimalFormulation::separates(const double *x) const {
   // sum_i phi'(x_i + t) + N pbar and its curvature sum_i phi''(x_i + t) < 0: where the slope
   // is negative at t = 0 it falls ever faster, without bound, and no minimum lies ahead.
   const ExponentialPotential phi = adhesion_;
-  const double pull = loops::sum(grid_.reductions(), n_, [&](std::int64_t i) { return phi.dphi(x[i]); });
+  const double pull =
+      loops::sum(grid_.reductions(), n_, [&](std::int64_t i) { return phi.dphi(x[i]); });
   return pull + target_ * pixels_ < 0.0;
 }
 
@@ -292,7 +295,24 @@ double PrimalFormulation::interaction_slopes(const double *gap, double *slope) {
   return slope0;
 }
 
+void PrimalFormulation::touch_at_zero_load() {
+  // Without adhesion and without load every uniform separation of a state is as good (the
+  // elastic energy sees no mean mode, the load does no work): the state reported is the one
+  // that touches, the limit of small loads, as under penetration control at delta = 0.
+  if (control_ != Control::mean_pressure || load_ != 0.0 || adhesive_ || potential_ != nullptr)
+    return;
+  double *x = variable().data();
+  const double lowest =
+      -loops::maximum(grid_.reductions(), n_, [&](std::int64_t i) { return -x[i]; });
+  if (!(lowest > 0.0)) return;
+  // The lowest pixels exactly on the wall.
+  loops::for_each(unknowns_, [&](std::int64_t i) {
+    x[i] = i < n_ && x[i] == lowest ? 0.0 : x[i] - lowest;
+  });
+}
+
 bool PrimalFormulation::finish() {
+  touch_at_zero_load();
   // The elastic pressure of the iterate, p = K u (scaled), into the state's pressure array
   // (on a surface beyond the grid, the grid's part of it; beyond, it is the residual).
   double *p = state_.pressure.data();

@@ -116,9 +116,13 @@ class PrimalFormulation final : public ScaledFormulation {
   double value_and_gradient_of_potential(const double *x, double *gradient);
   // phi'(g) of the interaction at the gaps (clipped at the wall) into slope; returns phi'(0).
   double interaction_slopes(const double *gap, double *slope);
+  // For finish() under load control without adhesion at zero load: the iterate moved
+  // uniformly until it touches the wall (its energy unchanged).
+  void touch_at_zero_load();
 
   const Field &stiffness_;  // normalised: backward(stiffness * forward(u)) = K u
-  double penetration_;  // scaled, in u (0 under mean-gap and load control, where it does not matter)
+  // Scaled, in u (0 under mean-gap and load control, where it does not matter).
+  double penetration_;
   // Under load control, the scaled pressure the load puts on each unknown of the surface (0
   // otherwise).
   double load_ = 0.0;

@@ -4,7 +4,8 @@
  * to the same state as every other algorithm, records its history, reports progress and can
  * be cancelled. Every algorithm offers penetration control; all but lbfgsb offer load control
  * with their default options, which lbfgsb refuses on the pressure (it keeps bounds, not a
- * mean; on the gap the load is a work term: tests/api/test_load_control.c). The unconstrained solvers of soft
+ * mean; on the gap the load is a work term: tests/api/test_load_control.c). The unconstrained
+ * solvers of soft
  * potentials refuse the hard wall, which this checks; tests/api/test_unconstrained.c runs them
  * on their own scenes. */
 #include <math.h>
