@@ -384,12 +384,13 @@ ASP_EXPORT int asp_system_create(const asp_grid *grid, double contact_modulus, a
  *     ("pk"; "bugnicourt" and "lbfgsb" with "variable" = "pressure", "lbfgsb" under
  *     penetration control only, as everywhere); the solvers on the gap ("bugnicourt" and
  *     "lbfgsb" with "variable" = "gap", with or without adhesion, "lbfgsb" also with a
- *     user's potential and the hard wall) serve it under ASP_CONTROL_PENETRATION only:
- *     the inverse of the compliance restricted to the box is not a convolution, so they
- *     minimise over the displacement of the whole padded surface, whose mean is not a free
- *     mode, and mean-gap control is refused with ASP_ERR_UNSUPPORTED; of the unconstrained
- *     solvers of soft potentials, "lbfgs" and "fire" serve it under penetration control,
- *     and "lbfgs_fourier", "fire_mass_weighted" and "gfmd" (periodic only) refuse it;
+ *     user's potential and the hard wall) serve it under ASP_CONTROL_PENETRATION and, but
+ *     for a user's potential, ASP_CONTROL_MEAN_PRESSURE: the inverse of the compliance
+ *     restricted to the box is not a convolution, so they minimise over the displacement of
+ *     the whole padded surface, whose mean is not a free mode, and mean-gap control is
+ *     refused with ASP_ERR_UNSUPPORTED; of the unconstrained solvers of soft potentials,
+ *     "lbfgs" and "fire" serve it under penetration control, and "lbfgs_fourier",
+ *     "fire_mass_weighted" and "gfmd" (periodic only) refuse it;
  *   - in the error measure the stiffness of one pixel is 1/C(0), C(0) the displacement of a
  *     pixel under unit pressure on itself (4 ln(1 + sqrt 2) dx/(pi E*), about 1.12 dx/E*,
  *     for square pixels of width dx); for a surface without slope the scale of a solve
@@ -648,18 +649,21 @@ typedef struct asp_solver asp_solver;
  *   "bugnicourt"  Bugnicourt et al.'s constrained conjugate gradient (OUT-LIN, 2018; hard
  *                 wall), on the pressure (option "variable" = "pressure", the default;
  *                 controls as "pk"; no adhesion; periodic or free substrate) or on the gap
- *                 ("gap"; controls ASP_CONTROL_MEAN_GAP, ASP_CONTROL_PENETRATION, on a free
- *                 substrate penetration only; with or without adhesion, see
+ *                 ("gap"; controls ASP_CONTROL_MEAN_PRESSURE, tensile loads included with
+ *                 adhesion, ASP_CONTROL_MEAN_GAP and ASP_CONTROL_PENETRATION, on a free
+ *                 substrate not mean-gap; with or without adhesion, see
  *                 asp_system_set_adhesion).
  *                 Faster than "pk" near full contact. Stops as stalled also when it has no
  *                 descent direction left.
  *   "lbfgsb"      Byrd, Lu, Nocedal & Zhu's L-BFGS-B (1995; hard wall, periodic or free
  *                 substrate) on the pressure (option "variable" = "pressure", the default;
  *                 no adhesion) or on the gap ("gap"; with or without adhesion, or a user's
- *                 potential with the hard wall), under
- *                 ASP_CONTROL_PENETRATION only: it keeps the unknowns in bounds but cannot
- *                 impose a mean, so mean-pressure and mean-gap control are refused with
- *                 ASP_ERR_UNSUPPORTED. Option "memory" (integer in [1, 100], default 5): the
+ *                 potential with the hard wall), under ASP_CONTROL_PENETRATION, and on the
+ *                 gap also under ASP_CONTROL_MEAN_PRESSURE (tensile loads included with
+ *                 adhesion; not with a user's potential): it keeps the unknowns in bounds but
+ *                 cannot impose a mean, so mean-gap control, and mean-pressure control on the
+ *                 pressure, are refused with ASP_ERR_UNSUPPORTED. Option "memory" (integer in
+ *                 [1, 100], default 5): the
  *                 correction pairs it keeps. Stops as stalled when even a steepest-descent
  *                 line search finds no decrease (the rounding floor).
  * The unconstrained solvers of soft potentials (the soft wall, the Lennard-Jones wall, a
@@ -743,8 +747,16 @@ ASP_EXPORT int asp_solver_set_history(asp_solver *solver, int on);
 
 /* Solves the system for the given control, starting from the system's current state, and
  * leaves the solution there.
- *   ASP_CONTROL_MEAN_PRESSURE  value = mean pressure (>= 0 for non-adhesive solvers);
- *                              the penetration is an unknown and is reported.
+ *   ASP_CONTROL_MEAN_PRESSURE  value = mean pressure (>= 0 without adhesion; with it a
+ *                              negative, tensile load is taken); the penetration is an
+ *                              unknown and is reported. Gap-based solvers find a minimum of
+ *                              the energy less the work of the load, F delta (F the total
+ *                              force): a stable state (one whose force grows with the
+ *                              penetration). An unstable equilibrium is never returned: from
+ *                              one, the solve follows the jump into or out of contact to the
+ *                              stable state it leads to, and under a tensile load beyond the
+ *                              pull-off force, where the surfaces have no stable state, it
+ *                              ends as ASP_TERMINATION_SEPARATED.
  *   ASP_CONTROL_PENETRATION    value = delta; the mean pressure is reported.
  *   ASP_CONTROL_MEAN_GAP       value = mean gap (>= 0); mean pressure and penetration are
  *                              reported. Offered by gap-based (primal) solvers only.
@@ -791,7 +803,17 @@ ASP_EXPORT int asp_solver_set_history(asp_solver *solver, int on);
  *   ASP_TERMINATION_BREAKDOWN        the arithmetic broke down (a non-finite value appeared);
  *                                    the system is reset to the zero-pressure state (no
  *                                    contact), and the final error is the last finite one
- *                                    (DBL_MAX if not even the starting point was finite).
+ *                                    (DBL_MAX if not even the starting point was finite);
+ *   ASP_TERMINATION_SEPARATED        no stable state under this load: the surfaces separate
+ *                                    (ASP_CONTROL_MEAN_PRESSURE with adhesion, a tensile load
+ *                                    beyond the pull-off force). Said of an iterate with no
+ *                                    pixel on the wall along whose uniform separation the
+ *                                    energy less the load's work falls (and then falls without
+ *                                    bound, the adhesive energy being concave); the system
+ *                                    holds that iterate's consistent, finite state, out of
+ *                                    contact. The most tensile load that still converges
+ *                                    bounds the pull-off force (the asperity command's sweep
+ *                                    brackets it, docs/command.md).
  * Errors (a status other than ASP_OK) mean the solve did not run or its result could not be
  * stored; the system keeps the state it had before the call, and the solver has no report.
  * One exception: when memory runs out after the solve has begun to work on the state in place
@@ -823,6 +845,7 @@ ASP_EXPORT int asp_solver_supports(const asp_solver *solver, const asp_system *s
 #define ASP_TERMINATION_CANCELLED 703
 #define ASP_TERMINATION_STALLED 704
 #define ASP_TERMINATION_BREAKDOWN 705
+#define ASP_TERMINATION_SEPARATED 706
 ASP_EXPORT int asp_solver_termination(const asp_solver *solver, int *reason);
 ASP_EXPORT int asp_solver_iterations(const asp_solver *solver, int64_t *iterations);
 ASP_EXPORT int asp_solver_evaluations(const asp_solver *solver, int64_t *evaluations);

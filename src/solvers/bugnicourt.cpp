@@ -231,23 +231,27 @@ void bugnicourt_separable(Formulation &f, const LocalTerm &psi, Monitor &monitor
 
 bool on_the_gap(const OptionValues &options) { return options.text("variable") == "gap"; }
 
-// On a free substrate the gap formulation takes penetration control only.
+// On a free substrate the gap formulation takes penetration and load control.
 constexpr const char *mean_gap_on_free =
     "mean-gap control of the gap formulation is offered on a periodic half-space only; on a "
     "free one the mean displacement is not a free mode whose energy can be left out";
 
 Offer offer_for(const OptionValues &options) {
   if (on_the_gap(options))
-    return {{Control::mean_gap, Control::penetration},
+    return {{Control::mean_gap, Control::penetration, Control::mean_pressure},
             {SubstrateKind::periodic, SubstrateKind::free},
             {InteractionKind::hard_wall, InteractionKind::adhesive_hard_wall},
             "variable = gap",
-            {Control::penetration},
-            mean_gap_on_free};
+            {Control::penetration, Control::mean_pressure},
+            mean_gap_on_free,
+            {},
+            ""};
   return {{Control::mean_pressure, Control::penetration},
           {SubstrateKind::periodic, SubstrateKind::free},
           {InteractionKind::hard_wall},
           "variable = pressure",
+          {},
+          "",
           {},
           ""};
 }
@@ -287,9 +291,9 @@ AlgorithmSpec bugnicourt_algorithm() {
   spec.interactions = {InteractionKind::hard_wall, InteractionKind::adhesive_hard_wall};
   spec.options = {{"variable", OptionType::choice, 0.0, 0.0, 0.0, false, {"pressure", "gap"},
                    "the unknown: pressure (the dual problem; mean-pressure or penetration "
-                   "control; no adhesion) or gap (the primal; mean-gap or penetration "
-                   "control, penetration only on a free substrate; with or without "
-                   "adhesion)"}};
+                   "control; no adhesion) or gap (the primal; mean-pressure, mean-gap or "
+                   "penetration control, not mean-gap on a free substrate; with or without "
+                   "adhesion, tensile loads included)"}};
   spec.run = run;
   return spec;
 }

@@ -131,6 +131,16 @@ class Formulation {
   // the largest scenes need one array fewer; its values at the start are undefined.
   virtual double *spare_array() { return nullptr; }
 
+  // Under load control, whether the iterate x shows that the load pulls the surfaces apart
+  // for good, so that no stable state lies ahead (the monitor then ends the solve as
+  // separated: a minimiser would follow the separation without end). Each formulation that
+  // can tell says by what rule; false where that cannot happen (other controls, compressive
+  // loads, no adhesion to hold the surfaces together).
+  virtual bool separates(const double *x) const {
+    (void)x;
+    return false;
+  }
+
   // Writes the iterate back into the system's state in physical units, with everything that
   // follows from it (gap, penetration). Returns false if a physical value is not finite (the
   // caller then resets the state).

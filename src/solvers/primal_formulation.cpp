@@ -13,6 +13,11 @@ namespace asp {
 
 namespace {
 
+constexpr const char *mean_pressure_with_potential =
+    "mean-pressure control of the gap formulation takes the hard wall with or without "
+    "exponential adhesion, not a user's potential (whose separation under a tensile load "
+    "cannot be told from its values); use penetration control";
+
 // A pixel on the wall keeps, in the stored state, the gap that the stored pressure makes
 // there: the residue of what the hard wall's reading set aside, measured at 0.5 to 4.3 times
 // the iterate's error (in units of P/k: both are pressures over the pixel stiffness) on
@@ -43,6 +48,15 @@ PrimalFormulation::PrimalFormulation(System &system, Control control, double val
   const PotentialInteraction *user = potential_interaction(system.interaction());
   if (user != nullptr && user->has_hard_wall())
     potential_ = user->potential().in_units(length_unit_, pressure_unit_);
+  if (control == Control::mean_pressure && potential_ != nullptr)
+    throw Error(Status::unsupported, mean_pressure_with_potential);
+  // The load spread over the displacement's surface: the mean pressure on the grid, N/M of
+  // it on each of the M points of a surface beyond the grid (N pixels).
+  if (control == Control::mean_pressure) {
+    double surface = static_cast<double>(unknowns_);
+    grid_.reductions().combine_sums(&surface, 1);
+    load_ = target_ * (pixels_ / surface);
+  }
 
   // Work arrays before anything changes, so that running out of memory changes nothing.
   if (potential_ != nullptr) {
@@ -69,7 +83,12 @@ PrimalFormulation::PrimalFormulation(System &system, Control control, double val
     counters_.transforms += 2;
     double *outside = surface_unknowns_.data();
     const double per_length = 1.0 / length_unit_;
-    loops::for_each(unknowns_ - n_, [&](std::int64_t i) { outside[n_ + i] *= per_length; });
+    // Under load control the unknowns there are the displacement less the penetration.
+    const double offset =
+        control == Control::mean_pressure ? state_.penetration * per_length : 0.0;
+    loops::for_each(unknowns_ - n_, [&](std::int64_t i) {
+      outside[n_ + i] = outside[n_ + i] * per_length - offset;
+    });
     std::copy(state_.gap.data(), state_.gap.data() + n_, surface_unknowns_.data());
   }
   // A pixel that carries compressive pressure is in contact, on the wall: its stored gap is
@@ -95,10 +114,10 @@ PrimalFormulation::PrimalFormulation(System &system, Control control, double val
 
 double PrimalFormulation::apply_stiffness(const double *field, double *out) {
   // K~/k with the transform's 1/N: the scaled stiffness, pixel stiffness 1. The q = 0 entry is
-  // the first: without K~(0) under mean-gap control.
+  // the first: without K~(0) under mean-gap and load control.
   substrate_.surface_forward(field, spectrum_.data());
   Complex *s = spectrum_.data();
-  if (control_ == Control::mean_gap && substrate_.layout().is_mean(0)) s[0] = 0.0;
+  if (control_ != Control::penetration && substrate_.layout().is_mean(0)) s[0] = 0.0;
   const double *k = stiffness_.data();
   const double factor = 1.0 / substrate_.pixel_stiffness();
   // u.K u = sum over all modes of the stiffness times |U_q|^2 (Parseval; the 1/N is in the
@@ -119,13 +138,29 @@ double PrimalFormulation::apply_stiffness(const double *field, double *out) {
 
 double PrimalFormulation::elastic_pressure(const double *x, double *out) {
   // u = x + (h - max h)/l + delta on the grid, u = x beyond it, into out, then p = K u,
-  // scaled, over it (the transform reads u before it writes p).
+  // scaled, over it (the transform reads u before it writes p). Under load control the load
+  // is added to p, and the sum of x, read before out (which may be x) is written, gives its
+  // work.
   const double per_length = 1.0 / length_unit_, top = max_height_, delta = penetration_;
-  loops::for_each(n_, [&](std::int64_t i) {
-    out[i] = x[i] + (heights_[i] - top) * per_length + delta;
-  });
+  const auto displacement = [&](std::int64_t i) {
+    const double xi = x[i];
+    out[i] = xi + (heights_[i] - top) * per_length + delta;
+    return xi;
+  };
+  double sum = 0.0;
+  if (control_ == Control::mean_pressure) {
+    sum = loops::sum(grid_.reductions(), n_, displacement) +
+          loops::sum(grid_.reductions(), unknowns_ - n_,
+                     [&](std::int64_t i) { return x[n_ + i]; });
+  } else {
+    loops::for_each(n_, displacement);
+  }
   if (out != x) std::copy(x + n_, x + unknowns_, out + n_);
-  return apply_stiffness(out, out);
+  const double energy = apply_stiffness(out, out);
+  if (control_ != Control::mean_pressure) return energy;
+  const double load = load_;
+  loops::for_each(unknowns_, [&](std::int64_t i) { out[i] += load; });
+  return energy + 2.0 * load * sum;
 }
 
 double PrimalFormulation::value_and_gradient(const double *x, double *gradient) {
@@ -215,6 +250,21 @@ double PrimalFormulation::curvature_bound(const double *direction,
          });
 }
 
+bool PrimalFormulation::separates(const double *x) const {
+  // Only a tensile load on the adhesive wall pulls the surfaces apart (a user's potential
+  // takes no load control; the plain wall takes no tensile load).
+  if (control_ != Control::mean_pressure || !(target_ < 0.0) || !adhesive_) return false;
+  if (contact_fraction(x) > 0.0) return false;
+  // No pixel on the wall. Along the separation x + t (every unknown, t >= 0; the elastic
+  // energy does not change, the mean mode being out of it) the objective's slope is
+  // sum_i phi'(x_i + t) + N pbar and its curvature sum_i phi''(x_i + t) < 0: where the slope
+  // is negative at t = 0 it falls ever faster, without bound, and no minimum lies ahead.
+  const ExponentialPotential phi = adhesion_;
+  const double pull =
+      loops::sum(grid_.reductions(), n_, [&](std::int64_t i) { return phi.dphi(x[i]); });
+  return pull + target_ * pixels_ < 0.0;
+}
+
 double PrimalFormulation::error(const double *x, const double *gradient) const {
   // Under mean-gap control the mean pressure is the multiplier of the mean.
   return bound_residual(grid_.reductions(), unknowns_, n_, x, gradient, 0.0,
@@ -245,7 +295,24 @@ double PrimalFormulation::interaction_slopes(const double *gap, double *slope) {
   return slope0;
 }
 
+void PrimalFormulation::touch_at_zero_load() {
+  // Without adhesion and without load every uniform separation of a state is as good (the
+  // elastic energy sees no mean mode, the load does no work): the state reported is the one
+  // that touches, the limit of small loads, as under penetration control at delta = 0.
+  if (control_ != Control::mean_pressure || load_ != 0.0 || adhesive_ || potential_ != nullptr)
+    return;
+  double *x = variable().data();
+  const double lowest =
+      -loops::maximum(grid_.reductions(), n_, [&](std::int64_t i) { return -x[i]; });
+  if (!(lowest > 0.0)) return;
+  // The lowest pixels exactly on the wall.
+  loops::for_each(unknowns_, [&](std::int64_t i) {
+    x[i] = i < n_ && x[i] == lowest ? 0.0 : x[i] - lowest;
+  });
+}
+
 bool PrimalFormulation::finish() {
+  touch_at_zero_load();
   // The elastic pressure of the iterate, p = K u (scaled), into the state's pressure array
   // (on a surface beyond the grid, the grid's part of it; beyond, it is the residual).
   double *p = state_.pressure.data();
@@ -320,9 +387,18 @@ bool PrimalFormulation::finish() {
   const double mean_height = loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
     return (heights_[i] - top) / n;
   });
+  // Under load control it is the mean of u - (h - max h) - g over the grid (at the optimum
+  // every pixel's, to the error).
+  const double load_penetration =
+      control_ != Control::mean_pressure
+          ? 0.0
+          : loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
+              return (u[i] - (heights_[i] - top) - g[i] * length_unit_) / n;
+            });
   const double delta = control_ == Control::mean_gap
                            ? mean_pressure / substrate_.k0() - target_ * length_unit_ - mean_height
-                           : penetration_ * length_unit_;
+                       : control_ == Control::mean_pressure ? load_penetration
+                                                            : penetration_ * length_unit_;
   // The gap that pressure makes. On the iterate's wall pixels it is the residue of what the
   // reading set aside, not 0: at the optimum of the order of the error, and far from it (a
   // solve that a loose tolerance stopped at its starting point) anything. A residue the

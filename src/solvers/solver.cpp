@@ -200,6 +200,7 @@ IterationState observe(const Formulation &f, const double *x, const double *g, d
   state.contact_fraction = monitor.wants_objective() ? f.contact_fraction(x) : 0.0;
   state.evaluations = f.counters().evaluations;
   state.transforms = f.counters().transforms;
+  state.separated = f.separates(x);
   return state;
 }
 

@@ -262,7 +262,7 @@ class SolverApi(unittest.TestCase):
         solver.solve(system, "penetration", 0.002)
         self.assertEqual(len(solver.history["error"]), 0)
         with self.assertRaises(asperity.UnsupportedError):
-            solver.solve(system, "mean_pressure", 1e-3)
+            solver.solve(system, "mean_gap", 1e-3)
         with self.assertRaises(asperity.InvalidArgumentError):
             solver.solve(system, "mean_force", 1e-3)
 
