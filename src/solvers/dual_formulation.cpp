@@ -184,11 +184,20 @@ double DualFormulation::error(const double *x, const double *gradient) const {
                         control_ == Control::mean_pressure);
 }
 
-double DualFormulation::contact_fraction(const double *x) const {
-  const double n = pixels_;
-  const double contacts =
-      loops::sum(grid_.reductions(), n_, [&](std::int64_t i) { return x[i] > 0.0 ? 1.0 : 0.0; });
-  return contacts / n;
+double DualFormulation::contact_fraction(const double *x, const double *gradient) const {
+  // As finish() would store the state of x: on the wall where x > 0 (the active set, whose
+  // complement the projection fills with exact zeros) and where x = 0 but the gap, after the
+  // penetration's centring under load control, is <= 0 (projected onto the wall).
+  const auto r = loops::sums<2>(grid_.reductions(), n_, [&](std::int64_t i, double *sum) {
+    const double in = x[i] > 0.0 ? 1.0 : 0.0;
+    sum[0] += in * gradient[i];
+    sum[1] += in;
+  });
+  const double shift = control_ == Control::mean_pressure && r[1] > 0.0 ? r[0] / r[1] : 0.0;
+  const double contacts = loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
+    return x[i] > 0.0 || gradient[i] - shift <= 0.0 ? 1.0 : 0.0;
+  });
+  return contacts / pixels_;
 }
 
 double DualFormulation::reported_objective(const double *x, const double *gradient,
@@ -279,6 +288,15 @@ DualFormulation::Gap DualFormulation::evaluate_gap(bool with_objective) {
   gap.objective = with_objective ? scale_ * (s[3] - 0.5 * pressure_dot_displacement +
                                              (delta_before - delta_) * s[4])
                                  : 0.0;
+  // The contact set the state would have if written back now (finish()): the active set and
+  // the pixels off it whose gap is <= 0. Only the history reports it.
+  gap.in_contact = contacts;
+  if (with_objective) {
+    const double shift = shift_;
+    gap.in_contact += loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
+      return !(p[i] > 0.0) && g[i] - shift <= 0.0 ? 1.0 : 0.0;
+    });
+  }
   gap_is_current_ = true;
   return gap;
 }
@@ -406,10 +424,17 @@ bool DualFormulation::finish() {
   double *g = state_.gap.data();
   const double pressure_factor = scale_ * pressure_unit_;
   const double shift = shift_, length = length_unit_;
+  // The gap stored is the projection of the iterate's onto the hard wall: exactly 0 on the
+  // active set p > 0 (where the gap the pressure makes is the residual, at most the error),
+  // and negative values cut to 0 (interpenetration the iterate left, at most the error at
+  // convergence). So the contact set (g = 0) is decided by the projection of the pressure,
+  // never by the sign of a rounding residue, and no ending leaves the surfaces
+  // interpenetrating.
   const double check = loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
     p[i] *= pressure_factor;
-    g[i] = (g[i] - shift) * length;
-    return 0.0 * (p[i] + g[i]);  // NaN if anything overflowed
+    const double gi = (g[i] - shift) * length;
+    g[i] = p[i] > 0.0 || !(gi > 0.0) ? 0.0 : gi;
+    return 0.0 * (p[i] + gi);  // NaN if anything overflowed
   });
   state_.penetration = delta_ * length;
   system_.remember_reference_pressure(pressure_unit_);
