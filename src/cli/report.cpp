@@ -67,8 +67,8 @@ void print_solve(std::FILE *out, const SolveReport &r, const Surface &s) {
                termination_name(r.termination), static_cast<long long>(r.iterations), r.seconds);
   // What a solve stopped short of the tolerance leaves (asp_solver_solve in asperity.h).
   if (!r.converged() && r.termination != ASP_TERMINATION_BREAKDOWN)
-    std::fprintf(out, "                  the state is the last iterate, not the best one; "
-                      "with a hard wall its gap is projected onto g >= 0\n");
+    std::fprintf(out, "                  the state is the last iterate (with a hard wall, "
+                      "its gap projected onto g >= 0)\n");
   std::fprintf(out, "error             %.3e (tolerance %.3g)\n", r.error, r.tolerance);
   std::fprintf(out, "contact fraction  %.6f\n", r.contact_fraction);
   std::fprintf(out, "mean pressure     %.6g (units of E*)\n", r.mean_pressure);

@@ -83,7 +83,7 @@ static const int statuses[] = {ASP_OK,
 
 /* Values that belong to no family, inside and outside the families' ranges. */
 static const int strays[] = {INT_MIN, -701, -1, 0, 1, 2, 99, 100, 104, 199, 200,
-                             203, 300, 316, 399, 400, 405, 500, 504, 600, 608,
+                             203, 300, 317, 399, 400, 406, 500, 504, 600, 608,
                              700, 706, 800, 1000, INT_MAX};
 #define N_STRAYS ((int)(sizeof strays / sizeof strays[0]))
 

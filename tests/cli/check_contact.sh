@@ -4,8 +4,9 @@
 #   - the built-in scene (an adhesive soft wall, on 128^2 pixels here): the mean of contact.npy
 #     is the contact fraction the report prints and summary.csv gives (to the last digit), and
 #     the last row of history.csv gives the same; summary.csv gives the compressive fraction,
-#     no larger. (The map used to be the sign of the pressure, which off contact is an
-#     attraction of rounding size: half the pixels of that scene.)
+#     no larger. (The map used to be the sign of the pressure, which off contact is of
+#     rounding size, ±2e-13 here, with a sign that changes with the FFT plan: 0.63 of the
+#     pixels in one run, 0.07 = the contact in another.)
 #   - an adhesive hard wall solved on the gap and cut short at its iteration limit (exit 1):
 #     the report says what the state is, no gap below 0 in gap.npy, and contact.npy, the
 #     summary and the last history row agree.
@@ -54,7 +55,7 @@ same() { awk -v a="$1" -v b="$2" 'BEGIN { exit (a + 0 == b + 0 && a != "") ? 0 :
 
 # ---- the built-in scene: an adhesive soft wall ----
 run run --set grid.nx=128 --set grid.ny=128 --set topography.short_cutoff=0.0625 \
-  --set output.fields='["contact", "pressure"]' --output builtin
+  --set output.fields='["contact"]' --output builtin
 if [ "$rc" -ne 0 ]; then
   fail "the built-in scene at 128^2 did not converge (exit $rc): $(cat "$err")"
 else
@@ -72,12 +73,6 @@ else
     same "$(last_history builtin contact_fraction)" "$summary"
   expect "summary.csv gives a compressive_fraction ($compressive) <= contact_fraction" \
     awk -v c="$compressive" -v f="$summary" 'BEGIN { exit (c != "" && c + 0 <= f + 0) ? 0 : 1 }'
-  # Off contact the soft wall's pressure is an attraction of rounding size: its sign is not
-  # the contact.
-  positive=$(npy_values builtin/pressure.npy |
-    awk '$1 > 0 { n++ } END { printf "%.17g\n", n / NR }')
-  expect "the contact is not the sign of the pressure here (p > 0 on $positive, contact $mean)" \
-    awk -v p="$positive" -v c="$mean" 'BEGIN { exit (p > 2 * c) ? 0 : 1 }'
 fi
 
 # ---- an adhesive hard wall on the gap, cut short ----
