@@ -584,20 +584,22 @@ ASP_EXPORT int asp_system_get(const asp_system *system, int key, double *value);
  * elsewhere, whatever its ending, so that the contact is never decided by the sign of a
  * rounding residue; the gap therefore differs from the one the pressure makes,
  * K^-1 p - (h - max h) - delta, by the residual of the solver's last iterate:
- *   - pressure-based (dual) solvers store their pressure iterate p >= 0 and the projection of
- *     the gap it makes: 0 where p > 0, that gap where it is > 0, and 0 where it is < 0 (those
- *     pixels touch the wall with zero pressure). On each pixel the difference is at most the
- *     final error times the reference pressure over the pixel stiffness (the error measures
- *     exactly these residues); the penetration is the one of the gap the pressure makes;
+ *   - pressure-based (dual) solvers store their pressure iterate p >= 0 and the gap it makes,
+ *     set to 0 on the active set p > 0, and where that gap is <= 0 off it (a pixel touching
+ *     the wall with no pressure, to rounding, or left interpenetrating by the residual) to
+ *     the smallest positive double (about 4.9e-324), so that the pixels with g = 0 are the
+ *     active set exactly. On each pixel the difference is at most the final error times the
+ *     reference pressure over the pixel stiffness (the error measures exactly these
+ *     residues); the penetration is the one of the gap the pressure makes;
  *   - gap-based (primal) solvers store their gap iterate (>= 0, 0 on the active set) and the
  *     hard wall's reading of it as the pressure (see asp_solver_solve), which differs from the
  *     elastic pressure K u of that gap's displacement by at most the final error times the
  *     reference pressure on each pixel; the displacement K^-1 p differs from g + (h - max h) +
- *     delta by K^-1 of that difference, which sums it over neighbouring pixels: measured at 4
+ *     delta by K^-1 of that difference, which sums it over neighbouring pixels: measured at 2
  *     to 14 times the final error times the reference pressure over the pixel stiffness (an
- *     adhesive sphere on a free 256^2 grid, Tabor parameter 5, and an adhesive rough surface
- *     on a periodic 128^2 grid, tolerances 1e-4 and 1e-6; for the sphere at 1e-4, 1.8e-4
- *     times the adhesion's range).
+ *     adhesive sphere on a free 256^2 grid, Tabor parameter 5, adhesive and non-adhesive
+ *     rough surfaces on periodic grids, tolerances from 1e-10 to a solve stopped at its
+ *     start; for the sphere at 1e-4, 1.8e-4 times the adhesion's range).
  * Soft walls store the pressure of their displacement and the gap it makes, consistent to
  * rounding. */
 #define ASP_FIELD_PRESSURE 401
@@ -766,8 +768,8 @@ ASP_EXPORT int asp_solver_set_history(asp_solver *solver, int on);
  * pressure produces, exactly 0 on the active set). With the hard wall no ending leaves the
  * surfaces interpenetrating (gap >= 0 everywhere): a solve that stops short of the tolerance
  * (iteration limit, cancelled, stalled) leaves its last iterate projected onto g >= 0 (the
- * pressure solvers' gap cut at 0, the gap solvers' iterate, feasible by construction), not
- * its best one. The contact fraction of that state is the last row of the history's
+ * pressure solvers' gap raised to above 0 off the active set, as asp_system_get_field says;
+ * the gap solvers' iterate, feasible by construction), not its best one. The contact fraction of that state is the last row of the history's
  * ASP_HISTORY_CONTACT_FRACTION. asp_solver_termination says which way it ended:
  *   ASP_TERMINATION_CONVERGED        the error met the tolerance (the only case in which
  *                                    asp_solver_converged reports 1);

@@ -17,7 +17,7 @@ namespace asp {
 // it differs from the gap the pressure makes, K^-1 pressure - (h - max h) - penetration, by
 // the residual of the solver's last iterate (see asp_system_get_field in asperity.h):
 // a pressure solve stores its pressure iterate and the projection of that gap (0 where
-// p > 0, negative values cut to 0), a gap solve its gap iterate and the hard wall's reading
+// p > 0, > 0 elsewhere), a gap solve its gap iterate and the hard wall's reading
 // of the pressure. Without the wall (soft walls) they are consistent to rounding.
 struct ContactState {
   Field pressure;

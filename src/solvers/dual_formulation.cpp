@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "core/loops.hpp"
 #include "solvers/bound_residual.hpp"
@@ -184,20 +185,12 @@ double DualFormulation::error(const double *x, const double *gradient) const {
                         control_ == Control::mean_pressure);
 }
 
-double DualFormulation::contact_fraction(const double *x, const double *gradient) const {
-  // As finish() would store the state of x: on the wall where x > 0 (the active set, whose
-  // complement the projection fills with exact zeros) and where x = 0 but the gap, after the
-  // penetration's centring under load control, is <= 0 (projected onto the wall).
-  const auto r = loops::sums<2>(grid_.reductions(), n_, [&](std::int64_t i, double *sum) {
-    const double in = x[i] > 0.0 ? 1.0 : 0.0;
-    sum[0] += in * gradient[i];
-    sum[1] += in;
-  });
-  const double shift = control_ == Control::mean_pressure && r[1] > 0.0 ? r[0] / r[1] : 0.0;
-  const double contacts = loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
-    return x[i] > 0.0 || gradient[i] - shift <= 0.0 ? 1.0 : 0.0;
-  });
-  return contacts / pixels_;
+double DualFormulation::contact_fraction(const double *x, const double *) const {
+  // The active set, which finish() stores as the pixels on the wall (g = 0).
+  const double n = pixels_;
+  const double contacts =
+      loops::sum(grid_.reductions(), n_, [&](std::int64_t i) { return x[i] > 0.0 ? 1.0 : 0.0; });
+  return contacts / n;
 }
 
 double DualFormulation::reported_objective(const double *x, const double *gradient,
@@ -288,15 +281,6 @@ DualFormulation::Gap DualFormulation::evaluate_gap(bool with_objective) {
   gap.objective = with_objective ? scale_ * (s[3] - 0.5 * pressure_dot_displacement +
                                              (delta_before - delta_) * s[4])
                                  : 0.0;
-  // The contact set the state would have if written back now (finish()): the active set and
-  // the pixels off it whose gap is <= 0. Only the history reports it.
-  gap.in_contact = contacts;
-  if (with_objective) {
-    const double shift = shift_;
-    gap.in_contact += loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
-      return !(p[i] > 0.0) && g[i] - shift <= 0.0 ? 1.0 : 0.0;
-    });
-  }
   gap_is_current_ = true;
   return gap;
 }
@@ -424,16 +408,18 @@ bool DualFormulation::finish() {
   double *g = state_.gap.data();
   const double pressure_factor = scale_ * pressure_unit_;
   const double shift = shift_, length = length_unit_;
-  // The gap stored is the projection of the iterate's onto the hard wall: exactly 0 on the
-  // active set p > 0 (where the gap the pressure makes is the residual, at most the error),
-  // and negative values cut to 0 (interpenetration the iterate left, at most the error at
-  // convergence). So the contact set (g = 0) is decided by the projection of the pressure,
-  // never by the sign of a rounding residue, and no ending leaves the surfaces
+  // The gap stored is exactly 0 on the active set p > 0 (where the gap the pressure makes is
+  // the residual, at most the error) and > 0 elsewhere, so that the contact (g = 0) is the
+  // active set, decided by the projection of the pressure and never by the sign of a
+  // rounding residue: off the active set a gap <= 0 (a pixel that touches the wall with no
+  // pressure, to rounding, or that the iterate leaves interpenetrating, by at most the error
+  // at convergence) is stored as the smallest positive double. No ending leaves the surfaces
   // interpenetrating.
+  constexpr double off_the_wall = std::numeric_limits<double>::denorm_min();
   const double check = loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
     p[i] *= pressure_factor;
     const double gi = (g[i] - shift) * length;
-    g[i] = p[i] > 0.0 || !(gi > 0.0) ? 0.0 : gi;
+    g[i] = p[i] > 0.0 ? 0.0 : (gi > 0.0 || std::isnan(gi) ? gi : off_the_wall);
     return 0.0 * (p[i] + gi);  // NaN if anything overflowed
   });
   state_.penetration = delta_ * length;

@@ -56,7 +56,7 @@ class DualFormulation final : public ScaledFormulation {
   double mean_target() const override { return target_; }
   double error(const double *x, const double *gradient) const override;
 
-  double contact_fraction(const double *x, const double *gradient) const override;
+  double contact_fraction(const double *x, const double *) const override;
   double reported_objective(const double *x, const double *gradient,
                             double value) const override;
 
@@ -67,10 +67,6 @@ class DualFormulation final : public ScaledFormulation {
     double norm;       // sum over the contact set of (g - mean)^2 (load) or g^2 (penetration)
     double contacts;   // number of pixels with p > 0
     double objective;  // Pi, scaled, when asked for (else 0)
-    // Pixels the state would have in contact if written back now: those with p > 0 and
-    // those with p = 0 whose gap is <= 0 (finish() puts them on the wall). Counted only
-    // with the objective (for the history); else the contacts.
-    double in_contact;
   };
   // The gap of the current pressure (one transform pair). Under load control the penetration
   // becomes the one that closes the mean gap over the contact set.

@@ -29,7 +29,7 @@ void polonsky_keer(DualFormulation &f, Monitor &monitor) {
     IterationState state;
     state.error = error;
     state.objective = gap.objective * f.energy_unit();
-    state.contact_fraction = gap.in_contact / total;
+    state.contact_fraction = gap.contacts / total;
     state.evaluations = f.counters().evaluations;
     state.transforms = f.counters().transforms;
     if (monitor.should_stop(iteration, state)) return;
