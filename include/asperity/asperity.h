@@ -500,7 +500,8 @@ ASP_EXPORT int asp_system_set_hard_wall(asp_system *system);
  * scaling is undone around the call). It is called once per evaluation with all pixels (and,
  * with the hard wall, also with the single gap 0, where the solver needs the wall's adhesive
  * stress -phi'(0)), and only from the thread that calls asp_solver_solve (or asp_system_get for
- * ASP_INTERACTION_ENERGY, and without the hard wall for ASP_CONTACT_FRACTION, which asks where
+ * ASP_INTERACTION_ENERGY, and without the hard wall for ASP_CONTACT_FRACTION and
+ * ASP_COMPRESSIVE_FRACTION, or asp_system_get_field for ASP_FIELD_CONTACT, which ask where
  * phi' < 0); it must not use the system or solver being solved: such calls from it are
  * refused with ASP_ERR_INVALID_STATE (and a destroy does nothing), while other handles and
  * functions work as anywhere. user_data is passed through untouched.

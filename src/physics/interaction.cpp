@@ -24,9 +24,9 @@ void Interaction::contact_map(const Grid &grid, const ContactState &state, doubl
 }
 
 namespace {
-// The number of local pixels for which in_contact(i, on_wall) holds, on_wall(i) saying
-// whether pixel i is in contact: from the gap with the wall, from the potential's map
-// without it (a temporary field only then).
+// The number of local pixels i for which counted(i, in_contact) holds, in_contact saying
+// whether pixel i is in contact: from the gap with the wall, from the contact map without it
+// (a temporary field only then).
 template <class Count>
 double count_in_contact(const Interaction &interaction, const Grid &grid,
                         const ContactState &state, Count &&counted) {

@@ -111,8 +111,8 @@ class PotentialInteraction final : public Interaction {
   PotentialInteraction(InteractionKind kind, std::unique_ptr<Potential> potential)
       : kind_(kind), potential_(std::move(potential)) {}
   InteractionKind kind() const override { return kind_; }
-  // Both evaluate the potential (a user's callback may throw Error(callback)); contact_map
-  // only without the hard wall.
+  // Both evaluate the potential (a user's callback may throw Error(callback)); contact_map,
+  // and the fractions that use it, only without the hard wall.
   void contact_map(const Grid &grid, const ContactState &state, double *out) const override;
   double energy(const Grid &grid, const ContactState &state) const override;
 
