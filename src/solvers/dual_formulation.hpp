@@ -56,7 +56,7 @@ class DualFormulation final : public ScaledFormulation {
   double mean_target() const override { return target_; }
   double error(const double *x, const double *gradient) const override;
 
-  double contact_fraction(const double *x) const override;
+  double contact_fraction(const double *x, const double *) const override;
   double reported_objective(const double *x, const double *gradient,
                             double value) const override;
 

@@ -113,12 +113,13 @@ class Formulation {
   // own passes rely on that.
   virtual double error(const double *x, const double *gradient) const = 0;
 
-  // For the monitor's history: the fraction of pixels in repulsive contact at x; the objective
+  // For the monitor's history: the fraction of pixels in contact at x, by the rule the state
+  // written back from x would follow (System::contact_fraction), given the gradient at x; the objective
   // as histories report it, from value_and_gradient's value and gradient at x (under a mean
   // constraint its constant multiplier term uses the multiplier's current estimate, so that
   // all solvers report the same number for the same iterate); and the factor that turns
   // objective values into the physical energy.
-  virtual double contact_fraction(const double *x) const = 0;
+  virtual double contact_fraction(const double *x, const double *gradient) const = 0;
   virtual double reported_objective(const double *x, const double *gradient,
                                     double value) const = 0;
   virtual double energy_unit() const = 0;

@@ -18,19 +18,6 @@ constexpr const char *mean_pressure_with_potential =
     "exponential adhesion, not a user's potential (whose separation under a tensile load "
     "cannot be told from its values); use penetration control";
 
-// A pixel on the wall keeps, in the stored state, the gap that the stored pressure makes
-// there: the residue of what the hard wall's reading set aside, measured at 0.5 to 4.3 times
-// the iterate's error (in units of P/k: both are pressures over the pixel stiffness) on
-// converged 32^2 and 64^2 scenes. Where it is at most this many times the error, and the
-// error small enough for that to be at most `largest_residue_on_wall`, it is the error's and
-// the pixel is set on the wall exactly.
-constexpr double residue_per_error = 8.0;
-// The largest such residue, in units of P/k: a gap set to 0 leaves the state inconsistent by
-// at most this, 1e-6 of the reference pressure in the elastic pressure it makes. A state
-// whose error is larger (a solve stopped early, a loose tolerance) keeps the gaps its
-// pressure makes on every pixel.
-constexpr double largest_residue_on_wall = 1e-6;
-
 }  // namespace
 
 PrimalFormulation::PrimalFormulation(System &system, Control control, double value)
@@ -271,7 +258,9 @@ double PrimalFormulation::error(const double *x, const double *gradient) const {
                         control_ == Control::mean_gap);
 }
 
-double PrimalFormulation::contact_fraction(const double *x) const {
+double PrimalFormulation::contact_fraction(const double *x, const double *) const {
+  // The pixels on the wall: finish() stores the iterate's gap, whose active set holds exact
+  // zeros (the projection onto x >= 0 makes them).
   const double n = pixels_;
   return loops::sum(grid_.reductions(), n_,
                     [&](std::int64_t i) { return x[i] > 0.0 ? 0.0 : 1.0; }) /
@@ -356,78 +345,57 @@ bool PrimalFormulation::finish() {
   // the interaction exerts there (none without adhesion, -phi'(g) with it: at the optimum K u
   // differs from it only by the residual); on the wall K u, clipped below at -phi'(0)
   // (0 without adhesion), since the wall can push but not pull, and what lies below is the
-  // residual of the iterate. Then the gap that this pressure makes, so that the state is
-  // consistent and its contact set is that of the iterate. The largest change the reading
-  // makes is the iterate's error (the residual of the optimality conditions, with the
-  // multiplier above under mean-gap control).
-  const double pressure = pressure_unit_, n = pixels_;
-  const auto reading = loops::sums_and_max<1>(
-      grid_.reductions(), n_, [&](std::int64_t i, double *sum, double &largest) {
-        const double on_wall = p[i] > wall_tension ? p[i] : wall_tension;
-        const double read = interacting ? (g[i] > 0.0 ? -slope[i] : on_wall)
-                                        : (g[i] > 0.0 ? 0.0 : (p[i] > 0.0 ? p[i] : 0.0));
-        const double change = std::fabs(read - p[i]);
-        largest = change > largest ? change : largest;
-        p[i] = read * pressure;
-        sum[0] += p[i] / n;
-      });
-  const double mean_pressure = reading[0], error = reading[1] > 0.0 ? reading[1] : 0.0;
-  Field displacement = grid_.make_field();
-  double *u = displacement.data();
-  substrate_.forward(p, spectrum_.data());
-  Complex *s = spectrum_.data();
-  const double *c = substrate_.normalised_compliance().data();
-  loops::for_each(static_cast<std::int64_t>(spectrum_.size()),
-                  [&](std::int64_t q) { s[q] *= c[q]; });
-  substrate_.backward(spectrum_.data(), u);
-  counters_.transforms += 2;
-  // Under mean-gap control the penetration keeps the mean gap: mean u = pbar/K~(0), so
-  // delta = pbar/K~(0) - mean gap - mean(h - max h).
+  // residual of the iterate. The gap stored is the iterate's own: >= 0 however the solve
+  // ended, and exactly 0 on its active set, so that the contact set (g = 0) is the solver's
+  // and the last history row counts the same pixels. The displacement the stored pressure
+  // makes differs from the one of that gap by K^-1 of what the reading changed, at most the
+  // iterate's error (in units of P) on each pixel.
+  const double pressure = pressure_unit_, n = pixels_, length = length_unit_;
+  const double mean_pressure = loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
+    const double on_wall = p[i] > wall_tension ? p[i] : wall_tension;
+    const double read = interacting ? (g[i] > 0.0 ? -slope[i] : on_wall)
+                                    : (g[i] > 0.0 ? 0.0 : (p[i] > 0.0 ? p[i] : 0.0));
+    p[i] = read * pressure;
+    return p[i] / n;
+  });
+  const auto sums = loops::sums<2>(grid_.reductions(), n_, [&](std::int64_t i, double *sum) {
+    const double gi = g[i] * length;
+    g[i] = gi > 0.0 || std::isnan(gi) ? gi : 0.0;  // -0.0 and a warm start's < 0 onto the wall
+    sum[0] += g[i] / n;
+    sum[1] += 0.0 * (p[i] + g[i]);  // NaN if anything overflowed
+  });
+  // Under mean-gap control the penetration follows from the convention mean u = pbar/K~(0):
+  // delta = pbar/K~(0) - mean g - mean(h - max h), with the mean of the gap stored.
   const double top = max_height_;
   const double mean_height = loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
     return (heights_[i] - top) / n;
   });
-  // Under load control it is the mean of u - (h - max h) - g over the grid (at the optimum
-  // every pixel's, to the error).
-  const double load_penetration =
-      control_ != Control::mean_pressure
-          ? 0.0
-          : loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
-              return (u[i] - (heights_[i] - top) - g[i] * length_unit_) / n;
-            });
+  // Under load control the penetration is the one the stored state says: the mean of
+  // u - (h - max h) - g over the grid, u = K^-1 p the displacement of the stored pressure (one
+  // FFT pair; on a periodic substrate this is pbar/K~(0) - mean g - mean(h - max h), as under
+  // mean-gap control, and on a free one the padded operator's).
+  double load_penetration = 0.0;
+  if (control_ == Control::mean_pressure) {
+    Field displacement = grid_.make_field();
+    double *u = displacement.data();
+    substrate_.forward(p, spectrum_.data());
+    Complex *s = spectrum_.data();
+    const double *c = substrate_.normalised_compliance().data();
+    loops::for_each(static_cast<std::int64_t>(spectrum_.size()),
+                    [&](std::int64_t q) { s[q] *= c[q]; });
+    substrate_.backward(spectrum_.data(), u);
+    counters_.transforms += 2;
+    load_penetration = loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
+      return (u[i] - (heights_[i] - top) - g[i]) / n;
+    });
+  }
   const double delta = control_ == Control::mean_gap
-                           ? mean_pressure / substrate_.k0() - target_ * length_unit_ - mean_height
+                           ? mean_pressure / substrate_.k0() - sums[0] - mean_height
                        : control_ == Control::mean_pressure ? load_penetration
-                                                            : penetration_ * length_unit_;
-  // The gap that pressure makes. On the iterate's wall pixels it is the residue of what the
-  // reading set aside, not 0: at the optimum of the order of the error, and far from it (a
-  // solve that a loose tolerance stopped at its starting point) anything. A residue the
-  // error accounts for (residue_per_error, largest_residue_on_wall above) is set to 0, so
-  // that a converged state has its contact pixels on the wall; the others keep the gap the
-  // pressure makes, so that the state stays consistent, and a warm start puts the pixels
-  // that carry pressure back on the wall (the constructor). Under mean-gap control the
-  // penetration then takes up what the pixels set to 0 held of the mean, so that the mean
-  // gap is the one asked for.
-  const double residue_allowed =
-      residue_per_error * error <= largest_residue_on_wall ? residue_per_error * error : 0.0;
-  const double snap = residue_allowed * length_unit_;
-  const auto computed = [&](std::int64_t i) { return u[i] - (heights_[i] - top) - delta; };
-  const auto set_on_wall = [&](std::int64_t i) {
-    return !(g[i] > 0.0) && std::fabs(computed(i)) <= snap;
-  };
-  const auto residues = loops::sums<3>(grid_.reductions(), n_, [&](std::int64_t i, double *sum) {
-    const bool on_wall = set_on_wall(i);
-    sum[0] += on_wall ? computed(i) : 0.0;
-    sum[1] += on_wall ? 0.0 : 1.0;
-    sum[2] += 0.0 * (p[i] + computed(i));  // NaN if anything overflowed
-  });
-  const double shift =
-      control_ == Control::mean_gap && residues[1] > 0.0 ? residues[0] / residues[1] : 0.0;
-  loops::for_each(n_, [&](std::int64_t i) { g[i] = set_on_wall(i) ? 0.0 : computed(i) + shift; });
-  const double check = residues[2];
-  state_.penetration = delta - shift;
+                                                            : penetration_ * length;
+  state_.penetration = delta;
   system_.remember_reference_pressure(pressure_unit_);
-  return check == 0.0 && std::isfinite(delta);
+  return sums[1] == 0.0 && std::isfinite(delta);
 }
 
 }  // namespace asp

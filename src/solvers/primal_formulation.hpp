@@ -44,9 +44,11 @@
 // Units as for the dual formulation (SceneUnits): the gradient is the pressure over P, and the
 // error is the largest residual of the optimality conditions in units of P.
 //
-// During a solve the system's gap array holds the scaled iterate; finish() stores the hard
-// wall's reading of it, the pressure, then the gap that pressure makes and the penetration.
-// With adhesion the pressure where the gap is open is the interaction's, -phi'(g) (tensile).
+// During a solve the system's gap array holds the scaled iterate; finish() stores it as the
+// gap (>= 0, exactly 0 on the active set), the hard wall's reading of it as the pressure, and
+// the penetration. With adhesion the pressure where the gap is open is the interaction's,
+// -phi'(g) (tensile). The displacement K^-1 p of that pressure differs from the gap's by the
+// residual of the iterate (asp_system_get_field in asperity.h says how much).
 #pragma once
 
 #include "physics/system.hpp"
@@ -94,7 +96,7 @@ class PrimalFormulation final : public ScaledFormulation {
   // bound: the adhesive energy is concave).
   bool separates(const double *x) const override;
   double error(const double *x, const double *gradient) const override;
-  double contact_fraction(const double *x) const override;
+  double contact_fraction(const double *x, const double *gradient) const override;
   double reported_objective(const double *, const double *, double value) const override {
     return value;
   }

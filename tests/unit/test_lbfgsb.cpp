@@ -239,7 +239,7 @@ class SmallQuadratic final : public asp::Formulation {
       e = std::max(e, x[i] > 0.0 ? std::fabs(gradient[i]) : std::max(-gradient[i], 0.0));
     return e;
   }
-  double contact_fraction(const double *) const override { return 0.0; }
+  double contact_fraction(const double *, const double *) const override { return 0.0; }
   double reported_objective(const double *, const double *, double value) const override {
     return value;
   }
