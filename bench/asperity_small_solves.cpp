@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // Many small solves, as a finite-element code makes them: one solve per integration point,
 // warm-started from the point's last state, on grids of 64 x 64 and 128 x 128. Through the
-// public C API (what such a code calls), calls per second of
+// public C API (what such a code calls), the time per call and calls per second of
 //   - asp_system_create + asp_system_destroy on an existing grid,
 //   - asp_system_reset, asp_system_set_topography,
 //   - a warm solve from a state that is already converged (one evaluation, nothing to do),
@@ -13,14 +13,19 @@
 // its solves on one thread (asp_grid_set_threads(grid, 1)): the work is spread over the
 // integration points, not inside one small transform.
 //
+// On one thread the time per call is the calling thread's processor time (user and system),
+// which a machine shared with other jobs disturbs far less than the wall time; calls per
+// second there are its inverse. On T threads the calls per second are all the threads' calls
+// over the wall time: what the machine delivered, other jobs and all.
+//
 // The overhead of a solve beyond its iterations. A warm converged solve makes one evaluation,
 // one FFT pair and its passes. The time of one evaluation is taken as the time of the
 // solver's iterations per FFT pair: from two solves of K1 = 10 and K2 = 110 iterations from
 // the same cold state, (t(K2) - t(K1)) / (P(K2) - P(K1)) with P the FFT pairs (transforms
-// over 2), each time the best of 7 (the machine's noise only ever adds time). The overhead
-// is the warm converged solve's time less that, relative to the warm converged solve and to
-// the warm solve after a small change; the warm converged solve's whole time relative to the
-// latter bounds it from above without any estimate.
+// over 2), each time in processor time and the best of 7 (the machine's noise only ever adds
+// time). The overhead is the warm converged solve's time less that, relative to the warm
+// converged solve and to the warm solve after a small change; the warm converged solve's
+// whole time relative to the latter bounds it from above without any estimate.
 //
 // The scene is bench/scaling_scene.hpp's: a self-affine surface (Hurst 0.8, rms slope 0.1,
 // roll-off a quarter of the box, short cutoff 4 pixels, seed 1) on a periodic substrate of
@@ -44,6 +49,8 @@
 #include <thread>
 #include <vector>
 
+#include <time.h>  // clock_gettime (POSIX)
+
 #include "asperity/asperity.h"
 
 namespace {
@@ -62,20 +69,29 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// Seconds per call of `call`: the best of 3 batches of batch_seconds each (the machine's noise
-// only ever adds time).
+// The processor time of the calling thread, user and system (page faults included). On a
+// machine shared with other jobs the wall time of a call also holds the time others ran
+// instead, which varies from run to run by more than the differences measured here; on a
+// quiet machine the two agree for calls on one thread (every grid here has one).
+double thread_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+// Processor seconds per call of `call` on this thread: the best of 3 batches of batch_seconds
+// of wall time each (the machine's noise only ever adds time).
 double per_call(const std::function<void()> &call) {
   double best = 1e300;
   for (int batch = 0; batch < 3; ++batch) {
     std::int64_t calls = 0;
     const auto start = std::chrono::steady_clock::now();
-    double elapsed = 0.0;
+    const double cpu_start = thread_seconds();
     do {
       call();
       ++calls;
-      elapsed = seconds_since(start);
-    } while (elapsed < batch_seconds);
-    best = std::min(best, elapsed / static_cast<double>(calls));
+    } while (seconds_since(start) < batch_seconds);
+    best = std::min(best, (thread_seconds() - cpu_start) / static_cast<double>(calls));
   }
   return best;
 }
@@ -299,9 +315,9 @@ double seconds_per_pair(asp_grid *grid, const Scene &s, Algorithm a) {
     for (int which = 0; which < 2; ++which) {
       ok(asp_solver_set_max_iterations(p.solver, which == 0 ? k1 : k2), "max_iterations");
       ok(asp_system_reset(p.system), "asp_system_reset");
-      const auto start = std::chrono::steady_clock::now();
+      const double start = thread_seconds();
       p.solve(p.penetration);
-      t[which] = std::min(t[which], seconds_since(start));
+      t[which] = std::min(t[which], thread_seconds() - start);
       transforms[which] = p.transforms();
     }
   }
@@ -316,7 +332,7 @@ void report_size(std::int64_t n, int threads) {
   std::printf("\n%lld x %lld, %d thread%s for the parallel columns\n",
               static_cast<long long>(n), static_cast<long long>(n), threads,
               threads == 1 ? "" : "s");
-  std::printf("%-38s %12s %12s %14s %14s %8s\n", "call", "us per call", "1 thread /s",
+  std::printf("%-38s %12s %12s %14s %14s %8s\n", "call", "cpu us/call", "1 thread /s",
               "T, one grid /s", "T, grid each /s", "iter.");
   for (const Case &c : cases()) {
     Point p(grid, s, c.algorithm);
