@@ -63,23 +63,25 @@ void zero_on_loop_threads(void *p, std::size_t bytes) {
 
 // The blocks of small fields that a thread freed, kept for its next fields of the same size. A
 // finite-element code solves a small system at each of thousands of integration points, and
-// every solve makes and frees the same work arrays: through malloc each time, a solve of a
-// 64^2 grid spent about a fifth of its time in the allocator and in the kernel (glibc gives
-// the top of the heap back once 128 KiB are free, and the next solve faults the pages in
-// again). Blocks of at most cached_block_bytes (a field of 362^2) are kept, at most
+// every solve makes and frees the same work arrays: through malloc each time, glibc gave the
+// top of its heap back to the kernel once 128 KiB were free, and the next solve faulted the
+// pages in again (a warm lbfgs_fourier solve of a 64^2 grid that starts converged spent 40 %
+// of its time making its arrays, most of it in the kernel). Blocks of at most
+// cached_block_bytes (a field of 362^2, a spectrum of 256^2) are kept, at most
 // cached_bytes_per_thread in all per thread, and freed when the thread ends; larger fields
 // go straight back, as before. Under AddressSanitizer nothing is kept, so that a field used
 // after it was freed is still caught.
 #if defined(__SANITIZE_ADDRESS__)
-#define ASPERITY_KEEP_FREED_FIELDS 1
+#define ASPERITY_KEEP_FREED_FIELDS 0
 #elif defined(__has_feature)
 #if __has_feature(address_sanitizer)
-#define ASPERITY_KEEP_FREED_FIELDS 1
+#define ASPERITY_KEEP_FREED_FIELDS 0
 #endif
 #endif
 #ifndef ASPERITY_KEEP_FREED_FIELDS
 #define ASPERITY_KEEP_FREED_FIELDS 1
 #endif
+#if ASPERITY_KEEP_FREED_FIELDS
 constexpr std::size_t cached_block_bytes = std::size_t{1} << 20;        // 1 MiB
 constexpr std::size_t cached_bytes_per_thread = std::size_t{8} << 20;   // 8 MiB
 constexpr int cached_blocks_per_thread = 64;
@@ -118,7 +120,6 @@ struct FreedBlocks {
   }
 };
 
-#if ASPERITY_KEEP_FREED_FIELDS
 thread_local FreedBlocks freed_blocks = {};
 // Gives the thread's blocks back when it ends; made on the thread's first kept block.
 struct FreedBlocksOwner {
