@@ -154,7 +154,7 @@ void *allocate_field_bytes(std::size_t bytes) {
   if (bytes <= cached_block_bytes) p = freed_blocks.take(bytes == 0 ? 1 : bytes);
 #endif
   if (p != nullptr) {
-    std::memset(p, 0, bytes);  // at most 1 MiB, on this thread, whose cache holds it
+    std::memset(p, 0, bytes);  // at most 1 MiB, whose pages are in memory already: one thread
   } else {
     p = fftw_malloc(bytes == 0 ? 1 : bytes);
     if (p == nullptr) throw std::bad_alloc();
