@@ -40,7 +40,9 @@ void bugnicourt(Formulation &f, Monitor &monitor) {
   double *spare = f.spare_array();
   Field g(n), c_field(spare != nullptr ? 0 : n), d(n), h(n);
   double *c = spare != nullptr ? spare : c_field.data();
-  const double value_at_zero = f.gradient_at_zero(c);
+  // The gradient at zero is needed from the first step on: a start that is already
+  // converged (a warm start from a solved state) ends after its one evaluation.
+  double value_at_zero = 0.0;
   // f(x) = x.(g + c)/2 + f(0) for the history, without an evaluation.
   const auto value_of = [&]() {
     return monitor.wants_objective()
@@ -60,6 +62,7 @@ void bugnicourt(Formulation &f, Monitor &monitor) {
   double value = evaluate();
   Projection p = passes.gather(x, gradient, product, 0.0, 0.0);
   if (monitor.should_stop(0, observe(f, x, g.data(), p.error, value, monitor))) return;
+  value_at_zero = f.gradient_at_zero(c);
   double descent = passes.direct(x, gradient, p, d.data(), nothing)[0];
 
   int followed = 0;
