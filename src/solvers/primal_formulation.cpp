@@ -241,7 +241,7 @@ bool PrimalFormulation::separates(const double *x) const {
   // Only a tensile load on the adhesive wall pulls the surfaces apart (a user's potential
   // takes no load control; the plain wall takes no tensile load).
   if (control_ != Control::mean_pressure || !(target_ < 0.0) || !adhesive_) return false;
-  if (contact_fraction(x) > 0.0) return false;
+  if (contact_fraction(x, nullptr) > 0.0) return false;
   // No pixel on the wall. Along the separation x + t (every unknown, t >= 0; the elastic
   // energy does not change, the mean mode being out of it) the objective's slope is
   // sum_i phi'(x_i + t) + N pbar and its curvature sum_i phi''(x_i + t) < 0: where the slope
