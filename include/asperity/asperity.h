@@ -66,7 +66,8 @@
  * Memory
  * ---------------------------------------------------------------------------------------------
  * A system holds 3 fields of nx*ny doubles (heights, pressure, gap): 24 bytes per pixel. A
- * solve adds the work arrays of its algorithm ("pk": 36 bytes per pixel, "bugnicourt",
+ * solve adds the work arrays of its algorithm ("pk": 36 bytes per pixel, 48 with
+ * "preconditioner" = "fourier", "bugnicourt",
  * measured: 52 on the pressure, 48 on the gap, 60 on the gap with adhesion and 64 with it
  * under mean-gap control (on the gap, one of its arrays is the system's pressure, which the
  * solve writes when it ends), "lbfgsb": on the pressure 52 + 16 per pair of its "memory", 132
@@ -681,7 +682,14 @@ typedef struct asp_solver asp_solver;
  * not provide is refused with ASP_ERR_UNSUPPORTED, listing the names it does:
  *   "pk"          Polonsky & Keer constrained conjugate gradient on the pressure (hard wall,
  *                 no adhesion, periodic or free substrate). Controls:
- *                 ASP_CONTROL_MEAN_PRESSURE, ASP_CONTROL_PENETRATION.
+ *                 ASP_CONTROL_MEAN_PRESSURE, ASP_CONTROL_PENETRATION. Option
+ *                 "preconditioner" (string): "none" (the default) or "fourier", the
+ *                 substrate's stiffness applied to the gap on the contact set before each
+ *                 conjugate-gradient update; on both substrates and under both controls it
+ *                 reaches the same solution in 2 to 5 times fewer iterations on 512^2 to
+ *                 2048^2 grids, each costing one more FFT pair, and 12 more bytes per pixel
+ *                 (24 on a free substrate): faster from about 1024^2 on
+ *                 (docs/performance.md, "Iterations against the grid").
  *   "bugnicourt"  Bugnicourt et al.'s constrained conjugate gradient (OUT-LIN, 2018; hard
  *                 wall), on the pressure (option "variable" = "pressure", the default;
  *                 controls as "pk"; no adhesion; periodic or free substrate) or on the gap

@@ -26,9 +26,13 @@ DualFormulation::DualFormulation(System &system, Control control, double value,
   // Work arrays before anything changes, so that running out of memory changes nothing.
   spectrum_ = substrate_.make_spectrum();
   height_spectrum_ = substrate_.make_spectrum();
-  if (steps == DualSteps::polonsky_keer) {
+  if (steps != DualSteps::generic) {
     direction_ = grid_.make_field();
     pressure_spectrum_ = substrate_.make_spectrum();
+  }
+  if (steps == DualSteps::polonsky_keer_fourier) {
+    preconditioned_ = grid_.make_field();
+    substrate_.normalised_stiffness();  // made now, so that a solve allocates nothing
   }
   hold_state();
   // The gap array holds the scaled heights for their transform; every way out of a solve
