@@ -378,12 +378,13 @@ ASP_EXPORT int asp_system_create(const asp_grid *grid, double contact_modulus, a
  *     ("pk"; "bugnicourt" and "lbfgsb" with "variable" = "pressure", "lbfgsb" under
  *     penetration control only, as everywhere); the solvers on the gap ("bugnicourt" and
  *     "lbfgsb" with "variable" = "gap", with or without adhesion, "lbfgsb" also with a
- *     user's potential and the hard wall) serve it under ASP_CONTROL_PENETRATION only:
- *     the inverse of the compliance restricted to the box is not a convolution, so they
- *     minimise over the displacement of the whole padded surface, whose mean is not a free
- *     mode, and mean-gap control is refused with ASP_ERR_UNSUPPORTED; of the unconstrained
- *     solvers of soft potentials, "lbfgs" and "fire" serve it under penetration control,
- *     and "lbfgs_fourier", "fire_mass_weighted" and "gfmd" (periodic only) refuse it;
+ *     user's potential and the hard wall) serve it under ASP_CONTROL_PENETRATION and, but
+ *     for a user's potential, ASP_CONTROL_MEAN_PRESSURE: the inverse of the compliance
+ *     restricted to the box is not a convolution, so they minimise over the displacement of
+ *     the whole padded surface, whose mean is not a free mode, and mean-gap control is
+ *     refused with ASP_ERR_UNSUPPORTED; of the unconstrained solvers of soft potentials,
+ *     "lbfgs" and "fire" serve it under penetration control, and "lbfgs_fourier",
+ *     "fire_mass_weighted" and "gfmd" (periodic only) refuse it;
  *   - in the error measure the stiffness of one pixel is 1/C(0), C(0) the displacement of a
  *     pixel under unit pressure on itself (4 ln(1 + sqrt 2) dx/(pi E*), about 1.12 dx/E*,
  *     for square pixels of width dx); for a surface without slope the scale of a solve
@@ -445,11 +446,12 @@ ASP_EXPORT int asp_system_set_adhesion(asp_system *system, double work_of_adhesi
  * a sum phi(g_i) (ASP_INTERACTION_ENERGY) and whose equilibrium pressure is p = -phi'(g).
  * Unlike the hard wall, a soft wall lets the gap become negative: the surfaces interpenetrate
  * as far as the repulsion lets them. Every one is defined for every finite gap, with finite
- * phi, phi' and phi''. A pixel counts as in contact (ASP_CONTACT_FRACTION) where the
- * potential repels, phi'(g) < 0 (at equilibrium where its pressure is positive; far from
- * contact the equilibrium pressure is an attraction below rounding, whose sign would be
- * noise); with the hard wall (asp_system_set_potential with hard_wall != 0) where the
- * pressure is positive, as for the other hard walls.
+ * phi, phi' and phi''. A pixel counts as in contact (ASP_CONTACT_FRACTION, ASP_FIELD_CONTACT)
+ * where the potential repels, phi'(g) < 0: at equilibrium that is where its pressure is
+ * positive, but far from contact the equilibrium pressure is an attraction below rounding,
+ * whose sign would be noise, while phi' changes sign once, at the potential's minimum, a gap
+ * of the order of its range. With the hard wall (asp_system_set_potential with
+ * hard_wall != 0) a pixel is in contact where the gap is 0, as for the other hard walls.
  * Nothing else changes: the state is kept as it is, and the next solve starts from it;
  * asp_system_reset starts cold. asp_system_set_hard_wall returns to the default.
  * The solvers that take a soft wall without the hard wall (asp_system_set_soft_wall,
@@ -503,7 +505,8 @@ ASP_EXPORT int asp_system_set_hard_wall(asp_system *system);
  * scaling is undone around the call). It is called once per evaluation with all pixels (and,
  * with the hard wall, also with the single gap 0, where the solver needs the wall's adhesive
  * stress -phi'(0)), and only from the thread that calls asp_solver_solve (or asp_system_get for
- * ASP_INTERACTION_ENERGY, and without the hard wall for ASP_CONTACT_FRACTION, which asks where
+ * ASP_INTERACTION_ENERGY, and without the hard wall for ASP_CONTACT_FRACTION and
+ * ASP_COMPRESSIVE_FRACTION, or asp_system_get_field for ASP_FIELD_CONTACT, which ask where
  * phi' < 0); it must not use the system or solver being solved: such calls from it are
  * refused with ASP_ERR_INVALID_STATE (and a destroy does nothing), while other handles and
  * functions work as anywhere. user_data is passed through untouched.
@@ -539,9 +542,13 @@ ASP_EXPORT int asp_system_reset(asp_system *system);
 
 /* Scalar results of the current state, chosen by key. In 1D, energies and forces are per unit
  * length. */
-#define ASP_CONTACT_FRACTION 301   /* fraction of pixels with positive (repulsive) pressure;
-                                      with adhesion, pixels on the wall under tension near a
-                                      contact's edge do not count (see ASP_ATTRACTIVE_FRACTION) */
+#define ASP_CONTACT_FRACTION 301   /* fraction of pixels in contact, the mean of
+                                      ASP_FIELD_CONTACT: with the hard wall (with or without
+                                      adhesion or a potential) the pixels where the gap is 0,
+                                      the solver's active set; with adhesion that is the
+                                      JKR/Maugis-Dugdale contact area, tensile edge included
+                                      (ASP_COMPRESSIVE_FRACTION is its compressive core); for
+                                      a soft wall where it repels, phi'(g) < 0 */
 #define ASP_MEAN_PRESSURE 302      /* mean of p over all pixels */
 #define ASP_MEAN_GAP 303           /* mean of g over all pixels */
 #define ASP_ELASTIC_ENERGY 304     /* (A/2) sum over q != 0 of K~(q)|u^_q|^2: the energy of the
@@ -566,16 +573,46 @@ ASP_EXPORT int asp_system_reset(asp_system *system);
                                       any other interaction, soft walls included) */
 #define ASP_ADHESION_RANGE 315     /* rho of asp_system_set_adhesion (0: no adhesion, and 0
                                       for any other interaction, soft walls included) */
+#define ASP_COMPRESSIVE_FRACTION 316 /* fraction of pixels in contact (ASP_FIELD_CONTACT) that
+                                      carry positive (compressive) pressure; equal to
+                                      ASP_CONTACT_FRACTION without adhesion at convergence,
+                                      less with it (the tensile edge of the contact) */
 ASP_EXPORT int asp_system_get(const asp_system *system, int key, double *value);
 
 /* Fields of the current state, copied into the caller's array of n = nx*ny doubles (this
  * process's local_pixels on a distributed grid). The displacement is the one the pressure
  * makes, K^-1 p (its mean by the q = 0 term), computed from the pressure on each call (one
- * FFT pair), so that it stays exact however large the penetration. */
+ * FFT pair), so that it stays exact however large the penetration.
+ * The contact map ASP_FIELD_CONTACT is 1.0 on the pixels in contact and 0.0 elsewhere, by the
+ * rule of ASP_CONTACT_FRACTION (its mean): with the hard wall where the gap is 0, for a soft
+ * wall where phi'(g) < 0 (which calls a user's potential once over all pixels).
+ * With the hard wall every solve leaves the gap exactly 0 on its active set and >= 0
+ * elsewhere, whatever its ending, so that the contact is never decided by the sign of a
+ * rounding residue; the gap therefore differs from the one the pressure makes,
+ * K^-1 p - (h - max h) - delta, by the residual of the solver's last iterate:
+ *   - pressure-based (dual) solvers store their pressure iterate p >= 0 and the gap it makes,
+ *     set to 0 on the active set p > 0, and where that gap is <= 0 off it (a pixel touching
+ *     the wall with no pressure, to rounding, or left interpenetrating by the residual) to
+ *     the smallest positive double (about 4.9e-324), so that the pixels with g = 0 are the
+ *     active set exactly. On each pixel the difference is at most the final error times the
+ *     reference pressure over the pixel stiffness (the error measures exactly these
+ *     residues); the penetration is the one of the gap the pressure makes;
+ *   - gap-based (primal) solvers store their gap iterate (>= 0, 0 on the active set) and the
+ *     hard wall's reading of it as the pressure (see asp_solver_solve), which differs from the
+ *     elastic pressure K u of that gap's displacement by at most the final error times the
+ *     reference pressure on each pixel; the displacement K^-1 p differs from g + (h - max h) +
+ *     delta by K^-1 of that difference, which sums it over neighbouring pixels: measured at 2
+ *     to 14 times the final error times the reference pressure over the pixel stiffness (an
+ *     adhesive sphere on a free 256^2 grid, Tabor parameter 5, adhesive and non-adhesive
+ *     rough surfaces on periodic grids, tolerances from 1e-10 to a solve stopped at its
+ *     start; for the sphere at 1e-4, 1.8e-4 times the adhesion's range).
+ * Soft walls store the pressure of their displacement and the gap it makes, consistent to
+ * rounding. */
 #define ASP_FIELD_PRESSURE 401
 #define ASP_FIELD_GAP 402
 #define ASP_FIELD_DISPLACEMENT 403
 #define ASP_FIELD_TOPOGRAPHY 404
+#define ASP_FIELD_CONTACT 405
 ASP_EXPORT int asp_system_get_field(const asp_system *system, int field, double *values,
                                     int64_t n);
 
@@ -638,22 +675,32 @@ typedef struct asp_solver asp_solver;
  * not provide is refused with ASP_ERR_UNSUPPORTED, listing the names it does:
  *   "pk"          Polonsky & Keer constrained conjugate gradient on the pressure (hard wall,
  *                 no adhesion, periodic or free substrate). Controls:
- *                 ASP_CONTROL_MEAN_PRESSURE, ASP_CONTROL_PENETRATION.
+ *                 ASP_CONTROL_MEAN_PRESSURE, ASP_CONTROL_PENETRATION. Option
+ *                 "preconditioner" (string): "none" (the default) or "fourier", the
+ *                 substrate's stiffness applied to the gap on the contact set before each
+ *                 conjugate-gradient update; on both substrates and under both controls it
+ *                 reaches the same solution in 2 to 5 times fewer iterations on 512^2 to
+ *                 2048^2 grids, each costing one more FFT pair, and 12 more bytes per pixel
+ *                 (24 on a free substrate): faster from about 1024^2 on
+ *                 (docs/performance.md, "Iterations against the grid").
  *   "bugnicourt"  Bugnicourt et al.'s constrained conjugate gradient (OUT-LIN, 2018; hard
  *                 wall), on the pressure (option "variable" = "pressure", the default;
  *                 controls as "pk"; no adhesion; periodic or free substrate) or on the gap
- *                 ("gap"; controls ASP_CONTROL_MEAN_GAP, ASP_CONTROL_PENETRATION, on a free
- *                 substrate penetration only; with or without adhesion, see
+ *                 ("gap"; controls ASP_CONTROL_MEAN_PRESSURE, tensile loads included with
+ *                 adhesion, ASP_CONTROL_MEAN_GAP and ASP_CONTROL_PENETRATION, on a free
+ *                 substrate not mean-gap; with or without adhesion, see
  *                 asp_system_set_adhesion).
  *                 Faster than "pk" near full contact. Stops as stalled also when it has no
  *                 descent direction left.
  *   "lbfgsb"      Byrd, Lu, Nocedal & Zhu's L-BFGS-B (1995; hard wall, periodic or free
  *                 substrate) on the pressure (option "variable" = "pressure", the default;
  *                 no adhesion) or on the gap ("gap"; with or without adhesion, or a user's
- *                 potential with the hard wall), under
- *                 ASP_CONTROL_PENETRATION only: it keeps the unknowns in bounds but cannot
- *                 impose a mean, so mean-pressure and mean-gap control are refused with
- *                 ASP_ERR_UNSUPPORTED. Option "memory" (integer in [1, 100], default 5): the
+ *                 potential with the hard wall), under ASP_CONTROL_PENETRATION, and on the
+ *                 gap also under ASP_CONTROL_MEAN_PRESSURE (tensile loads included with
+ *                 adhesion; not with a user's potential): it keeps the unknowns in bounds but
+ *                 cannot impose a mean, so mean-gap control, and mean-pressure control on the
+ *                 pressure, are refused with ASP_ERR_UNSUPPORTED. Option "memory" (integer in
+ *                 [1, 100], default 5): the
  *                 correction pairs it keeps. Stops as stalled when even a steepest-descent
  *                 line search finds no decrease (the rounding floor).
  * The unconstrained solvers of soft potentials (the soft wall, the Lennard-Jones wall, a
@@ -721,8 +768,8 @@ ASP_EXPORT int asp_solver_set_max_iterations(asp_solver *solver, int64_t max_ite
 /* Called once per iteration of every solve, after the error of that iteration is known, with
  * the iteration number (0 is the starting point), the wall-clock seconds since the solve
  * started and the error. Return 0 to go on; any other value stops the solve cleanly: the
- * system holds the valid, consistent state of that iteration and the termination reason is
- * ASP_TERMINATION_CANCELLED (unless that iteration's error already met the tolerance: a
+ * system holds the valid state of that iteration (see asp_solver_solve) and the termination
+ * reason is ASP_TERMINATION_CANCELLED (unless that iteration's error already met the tolerance: a
  * converged state is reported as converged). The callback runs on the thread that called
  * asp_solver_solve and must not use the solver or system being solved (such calls from it are
  * refused with ASP_ERR_INVALID_STATE, and a destroy does nothing). NULL removes it.
@@ -737,8 +784,16 @@ ASP_EXPORT int asp_solver_set_history(asp_solver *solver, int on);
 
 /* Solves the system for the given control, starting from the system's current state, and
  * leaves the solution there.
- *   ASP_CONTROL_MEAN_PRESSURE  value = mean pressure (>= 0 for non-adhesive solvers);
- *                              the penetration is an unknown and is reported.
+ *   ASP_CONTROL_MEAN_PRESSURE  value = mean pressure (>= 0 without adhesion; with it a
+ *                              negative, tensile load is taken); the penetration is an
+ *                              unknown and is reported. Gap-based solvers find a minimum of
+ *                              the energy less the work of the load, F delta (F the total
+ *                              force): a stable state (one whose force grows with the
+ *                              penetration). An unstable equilibrium is never returned: from
+ *                              one, the solve follows the jump into or out of contact to the
+ *                              stable state it leads to, and under a tensile load beyond the
+ *                              pull-off force, where the surfaces have no stable state, it
+ *                              ends as ASP_TERMINATION_SEPARATED.
  *   ASP_CONTROL_PENETRATION    value = delta; the mean pressure is reported.
  *   ASP_CONTROL_MEAN_GAP       value = mean gap (>= 0); mean pressure and penetration are
  *                              reported. Offered by gap-based (primal) solvers only.
@@ -755,13 +810,12 @@ ASP_EXPORT int asp_solver_set_history(asp_solver *solver, int on);
  * mean over q of K~(q); for gap-based (primal) solvers it is the pressure of the iterate's
  * displacement (|p| where g > 0, max(-p, 0) where g = 0), under mean-gap control relative
  * to the mean pressure, the constraint's multiplier; with adhesion the pressure counted is
- * the elastic pressure less the interaction's, K u + phi'(g). A primal solve stores the hard
- * wall's reading of its iterate: where the gap is open no pressure (with adhesion the
- * interaction's, -phi'(g), tensile), on the wall the elastic pressure, none below 0 (with
- * adhesion below -w/rho), and the gap that pressure makes (0 on the iterate's wall pixels
- * where that gap is within 8 times the error, in units of the reference pressure over the
- * stiffness of one pixel, and the error at most 1.25e-7; the penetration then keeps a mean
- * gap control exact).
+ * the elastic pressure less the interaction's, K u + phi'(g). A primal solve stores its gap
+ * iterate and the hard wall's reading of it as the pressure: where the gap is open no
+ * pressure (with adhesion the interaction's, -phi'(g), tensile), on the wall the elastic
+ * pressure, none below 0 (with adhesion below -w/rho). A dual solve stores its pressure
+ * iterate and the gap it makes, projected onto the wall (asp_system_get_field says how the
+ * two then differ).
  *
  * What the error can resolve: it is computed in doubles from the pressures of the iterate,
  * so a residual below their rounding, about 1e-16 times the largest of them (elastic,
@@ -771,22 +825,38 @@ ASP_EXPORT int asp_solver_set_history(asp_solver *solver, int on);
  * cancelled in floating point (a uniform or symmetric state, say), not that the state is
  * exact: it is exact to round-off. A tolerance below that floor is met only by such a
  * cancellation; otherwise the solve ends stalled or at the iteration limit. The error
- * reported is that of the iterate written back into the system (of which a primal solve's
- * state is the reading above), so that "converged" says that the state left met the
- * tolerance.
+ * reported is that of the iterate written back into the system (of which the state is the
+ * reading above), so that "converged" says that the state left met the tolerance.
  *
- * Every way a solve ends returns ASP_OK with a consistent, finite state in the system (the
- * gap is the one the pressure produces); asp_solver_get with ASP_REPORT_TERMINATION says
- * which way it ended:
+ * Every way a solve ends returns ASP_OK with a finite state in the system, made from the
+ * solver's last iterate as described above (the gap within the residual of the one the
+ * pressure produces, exactly 0 on the active set). With the hard wall no ending leaves the
+ * surfaces interpenetrating (gap >= 0 everywhere): a solve that stops short of the tolerance
+ * (iteration limit, cancelled, stalled) leaves its last iterate projected onto g >= 0 (the
+ * pressure solvers' gap raised to above 0 off the active set, as asp_system_get_field says;
+ * the gap solvers' iterate, feasible by construction), not its best one. The contact fraction
+ * of that state is the last row of the history's ASP_HISTORY_CONTACT_FRACTION.
+ * asp_solver_get with ASP_REPORT_TERMINATION says which way it ended:
  *   ASP_TERMINATION_CONVERGED        the error met the tolerance (the only case in which
  *                                    ASP_REPORT_CONVERGED is 1);
  *   ASP_TERMINATION_ITERATION_LIMIT  max_iterations iterations ran;
  *   ASP_TERMINATION_CANCELLED        the progress callback returned non-zero;
  *   ASP_TERMINATION_STALLED          no progress within stall_window iterations;
  *   ASP_TERMINATION_BREAKDOWN        the arithmetic broke down (a non-finite value appeared);
- *                                    the system is reset to the zero-pressure state (no
- *                                    contact), and the final error is the last finite one
- *                                    (DBL_MAX if not even the starting point was finite).
+ *                                    the system is reset to the zero-pressure state (the
+ *                                    undeformed body touching the highest point), and the
+ *                                    final error is the last finite one
+ *                                    (DBL_MAX if not even the starting point was finite);
+ *   ASP_TERMINATION_SEPARATED        no stable state under this load: the surfaces separate
+ *                                    (ASP_CONTROL_MEAN_PRESSURE with adhesion, a tensile load
+ *                                    beyond the pull-off force). Said of an iterate with no
+ *                                    pixel on the wall along whose uniform separation the
+ *                                    energy less the load's work falls (and then falls without
+ *                                    bound, the adhesive energy being concave); the system
+ *                                    holds that iterate's consistent, finite state, out of
+ *                                    contact. The most tensile load that still converges
+ *                                    bounds the pull-off force (the asperity command's sweep
+ *                                    brackets it, docs/command.md).
  * Errors (a status other than ASP_OK) mean the solve did not run or its result could not be
  * stored; the system keeps the state it had before the call, and the solver has no report.
  * One exception: when memory runs out after the solve has begun to work on the state in place
@@ -843,6 +913,7 @@ ASP_EXPORT int asp_solver_get(const asp_solver *solver, int key, double *value);
 #define ASP_TERMINATION_CANCELLED 703
 #define ASP_TERMINATION_STALLED 704
 #define ASP_TERMINATION_BREAKDOWN 705
+#define ASP_TERMINATION_SEPARATED 706
 
 /* The same figures by getters of their own, kept while the ABI is 0.x for the programs that
  * use them: each gives what asp_solver_get gives for its key, in its own type, and refuses
@@ -867,7 +938,10 @@ ASP_EXPORT int asp_solver_elapsed_seconds(const asp_solver *solver, double *seco
  *   ASP_HISTORY_SECONDS           wall-clock seconds since the solve started
  *   ASP_HISTORY_ERROR             the error (as compared with the tolerance)
  *   ASP_HISTORY_OBJECTIVE         the algorithm's objective (docs/algorithms.md says which)
- *   ASP_HISTORY_CONTACT_FRACTION  fraction of pixels in repulsive contact */
+ *   ASP_HISTORY_CONTACT_FRACTION  fraction of pixels in contact at that iterate, by the rule
+ *                                 of ASP_CONTACT_FRACTION applied to the state the iterate
+ *                                 would leave: the last row equals ASP_CONTACT_FRACTION
+ *                                 after the solve, however it ended (but a breakdown) */
 #define ASP_HISTORY_ITERATION 601
 #define ASP_HISTORY_EVALUATIONS 602
 #define ASP_HISTORY_TRANSFORMS 603

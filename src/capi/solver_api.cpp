@@ -40,6 +40,7 @@ int termination_code(asp::Termination termination) {
     case asp::Termination::cancelled: return ASP_TERMINATION_CANCELLED;
     case asp::Termination::stalled: return ASP_TERMINATION_STALLED;
     case asp::Termination::breakdown: return ASP_TERMINATION_BREAKDOWN;
+    case asp::Termination::separated: return ASP_TERMINATION_SEPARATED;
   }
   throw asp::Error(asp::Status::internal, "termination reason without a code");
 }

@@ -177,6 +177,7 @@ int asp_system_get(const asp_system *system, int key, double *value) {
       case ASP_INTERACTION_ENERGY: result = s.interaction_energy(); break;
       case ASP_WORK_OF_ADHESION: result = adhesion != nullptr ? adhesion->work() : 0.0; break;
       case ASP_ADHESION_RANGE: result = adhesion != nullptr ? adhesion->range() : 0.0; break;
+      case ASP_COMPRESSIVE_FRACTION: result = s.compressive_fraction(); break;
       default: throw asp::Error(asp::Status::internal, "scalar key without a getter");
     }
     if (!std::isfinite(result))
@@ -200,6 +201,12 @@ int asp_system_get_field(const asp_system *system, int field, double *values, in
       case ASP_FIELD_GAP: source = &s.state().gap; break;
       case ASP_FIELD_TOPOGRAPHY: source = &s.heights(); break;
       case ASP_FIELD_DISPLACEMENT: s.displacement(values); return;
+      case ASP_FIELD_CONTACT: {
+        // A soft wall's map calls the potential, which may be a user's callback.
+        const asp::capi::BusyScope busy(system);
+        s.contact_map(values);
+        return;
+      }
       default: throw asp::Error(asp::Status::internal, "field without a getter");
     }
     std::copy(source->begin(), source->end(), values);

@@ -44,6 +44,7 @@ const char *termination_name(int reason) {
     case ASP_TERMINATION_CANCELLED: return "cancelled";
     case ASP_TERMINATION_STALLED: return "stalled";
     case ASP_TERMINATION_BREAKDOWN: return "breakdown";
+    case ASP_TERMINATION_SEPARATED: return "separated";
     default: return "unknown";
   }
 }

@@ -126,10 +126,10 @@ std::vector<double> read_field(const Contact &contact, int field) {
   return values;
 }
 
-std::vector<double> contact_map(const std::vector<double> &pressure) {
-  std::vector<double> in_contact(pressure.size());
-  for (size_t i = 0; i < pressure.size(); ++i) in_contact[i] = pressure[i] > 0.0 ? 1.0 : 0.0;
-  return in_contact;
+std::vector<double> contact_map(const Contact &contact) {
+  // Not the sign of the pressure: off contact a soft wall's pressure is an attraction of
+  // rounding size, and with adhesion the contact's edge is under tension.
+  return read_field(contact, ASP_FIELD_CONTACT);
 }
 
 std::vector<std::string> write_fields(const Contact &contact,
@@ -142,7 +142,7 @@ std::vector<std::string> write_fields(const Contact &contact,
     else if (name == "gap") values = read_field(contact, ASP_FIELD_GAP);
     else if (name == "displacement") values = read_field(contact, ASP_FIELD_DISPLACEMENT);
     else if (name == "topography") values = read_field(contact, ASP_FIELD_TOPOGRAPHY);
-    else values = contact_map(read_field(contact, ASP_FIELD_PRESSURE));
+    else values = contact_map(contact);
     const std::string path = directory + "/" + name + ".npy";
     OutputFile file(path);
     try {

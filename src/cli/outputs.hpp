@@ -78,7 +78,8 @@ std::vector<double> read_field(const Contact &contact, int field);
 std::vector<std::string> write_fields(const Contact &contact, const std::vector<std::string> &names,
                                       const std::string &directory);
 
-// The pixels in repulsive contact (pressure > 0) as 1, the others as 0.
-std::vector<double> contact_map(const std::vector<double> &pressure);
+// The pixels in contact as 1, the others as 0: the library's map (ASP_FIELD_CONTACT), whose
+// mean is the contact fraction the report gives.
+std::vector<double> contact_map(const Contact &contact);
 
 }  // namespace cli

@@ -67,6 +67,10 @@ void print_solve(std::FILE *out, const SolveReport &r, const Surface &s) {
   const std::string u = s.unit.empty() ? "" : " " + s.unit;
   std::fprintf(out, "termination       %s after %lld iterations (%.3f s)\n",
                termination_name(r.termination), static_cast<long long>(r.iterations), r.seconds);
+  // What a solve stopped short of the tolerance leaves (asp_solver_solve in asperity.h).
+  if (!r.converged() && r.termination != ASP_TERMINATION_BREAKDOWN)
+    std::fprintf(out, "                  the state is the last iterate (with a hard wall, "
+                      "its gap projected onto g >= 0)\n");
   std::fprintf(out, "error             %.3e (tolerance %.3g)\n", r.error, r.tolerance);
   std::fprintf(out, "contact fraction  %.6f\n", r.contact_fraction);
   std::fprintf(out, "mean pressure     %.6g (%s)\n", r.mean_pressure,
@@ -88,6 +92,7 @@ void write_summary(const std::string &path, const Scene &scene, const SolveRepor
   table.add_row({"error", cell(r.error), ""});
   table.add_row({"tolerance", cell(r.tolerance), ""});
   table.add_row({"contact_fraction", cell(r.contact_fraction), ""});
+  table.add_row({"compressive_fraction", cell(r.compressive_fraction), ""});
   table.add_row({"mean_pressure", cell(r.mean_pressure), pressure_unit_of(s)});
   table.add_row({"penetration", cell(r.penetration), s.unit});
   table.add_row({"mean_gap", cell(r.mean_gap), s.unit});

@@ -122,7 +122,7 @@ int run_command(const std::vector<std::string> &arguments) {
       else if (field == "gap")
         draw(field, read_field(contact, ASP_FIELD_GAP), s.unit.empty() ? "gap" : "gap [" + s.unit + "]");
       else if (field == "contact")
-        draw(field, contact_map(read_field(contact, ASP_FIELD_PRESSURE)), "in contact (1) or not (0)");
+        draw(field, contact_map(contact), "in contact (1) or not (0)");
       else if (field == "displacement")
         draw(field, read_field(contact, ASP_FIELD_DISPLACEMENT), "displacement");
       else

@@ -67,6 +67,7 @@ SolveReport solve(asp_solver *solver, const std::string &algorithm, Contact &con
   r.penetration = observable(system, ASP_PENETRATION);
   r.mean_gap = observable(system, ASP_MEAN_GAP);
   r.contact_fraction = observable(system, ASP_CONTACT_FRACTION);
+  r.compressive_fraction = observable(system, ASP_COMPRESSIVE_FRACTION);
   r.total_force = observable(system, ASP_TOTAL_FORCE);
   const struct {
     double value;
@@ -77,6 +78,7 @@ SolveReport solve(asp_solver *solver, const std::string &algorithm, Contact &con
                  {r.penetration, "penetration"},
                  {r.mean_gap, "mean gap"},
                  {r.contact_fraction, "contact fraction"},
+                 {r.compressive_fraction, "compressive fraction"},
                  {r.total_force, "total force"}};
   for (const auto &n : numbers) require_finite(n.value, n.name, r);
 

@@ -32,7 +32,8 @@ struct SolveReport {
   double mean_pressure = 0.0;
   double penetration = 0.0;
   double mean_gap = 0.0;
-  double contact_fraction = 0.0;
+  double contact_fraction = 0.0;      // ASP_CONTACT_FRACTION
+  double compressive_fraction = 0.0;  // ASP_COMPRESSIVE_FRACTION
   double total_force = 0.0;
   // history[c][row] for history_columns[c]; empty when the history was off.
   std::vector<std::vector<double>> history;

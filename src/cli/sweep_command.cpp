@@ -2,6 +2,8 @@
 // asperity sweep [SCENE]: loading then unloading steps of the control, each warm-started from
 // the step before, so that jumps into and out of contact and the hysteresis between loading
 // and unloading show (thesis section 4.3).
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "arguments.hpp"
@@ -33,6 +35,13 @@ const char *const sweep_help =
     "  --to B            last loading value (control.sweep.to)\n"
     "  --steps N         N equal steps from A to B (control.sweep.steps)\n"
     "  --no-unload       only the loading steps (control.sweep.unload = false)\n"
+    "\n"
+    "Pull-off: under mean-pressure control with adhesion the unloading goes on past the\n"
+    "first value into tension, by the smallest loading step, until a load separates the\n"
+    "surfaces (termination 'separated': no stable state under that load); the bracket\n"
+    "between the most tensile stable load and that one is then halved 4 times (phase\n"
+    "'pull-off', each trial started again from the stable branch), and the pull-off\n"
+    "force is reported as the most tensile load with a stable state.\n"
     "\n";
 
 // d(mean pressure)/d(penetration) of a step's state (asp_solver_normal_stiffness), or an empty
@@ -46,6 +55,22 @@ std::string stiffness_cell(asp_solver *solver, asp_system *system, bool converge
 
 }  // namespace
 
+// The pull-off search of a load-controlled sweep with adhesion: the solve at each load either
+// converges on a stable state or ends separated (no stable state under that load), so that
+// the most tensile load with a stable state and the first load found to separate bracket the
+// pull-off force.
+struct PullOff {
+  double stable = 0.0;     // the most tensile load (mean pressure) with a stable state
+  double separated = 0.0;  // the least tensile load found to separate
+  bool has_stable = false;
+  bool has_separated = false;
+};
+
+// Halvings of the bracket after the unloading steps have found it: 1/16 of a step.
+constexpr int pull_off_halvings = 4;
+// Unloading steps into tension past the last scheduled value before giving up the search.
+constexpr int pull_off_extra_steps = 200;
+
 int run_sweep(Session &session) {
   const Scene &scene = session.scene;
   Contact &contact = session.contact;
@@ -56,11 +81,26 @@ int run_sweep(Session &session) {
   const size_t loading = values.size();
   if (scene.control.sweep.unload)
     for (size_t k = loading - 1; k-- > 0;) values.push_back(values[k]);
+  // Under load control with adhesion the unloading goes on into tension until the surfaces
+  // separate, and the pull-off force is bracketed.
+  const bool search_pull_off = control == ASP_CONTROL_MEAN_PRESSURE &&
+                               scene.control.sweep.unload &&
+                               observable(contact.system.get(), ASP_WORK_OF_ADHESION) > 0.0;
+  // The stride of the steps into tension: the loading steps' (a tenth of the largest load
+  // for a single value).
+  double stride = 0.0;
+  for (size_t k = 1; k < loading; ++k) {
+    const double d = std::fabs(values[k] - values[k - 1]);
+    if (d > 0.0 && (stride == 0.0 || d < stride)) stride = d;
+  }
+  if (stride == 0.0) stride = 0.1 * std::fabs(values[0]);
 
   print_scene(stdout, scene, contact);
   std::printf("sweep             %s from %g to %g in %zu loading steps%s, solver %s\n",
               control_name(control), values.front(), values[loading - 1], loading,
-              scene.control.sweep.unload ? " and back" : "", scene.solver.algorithm.c_str());
+              search_pull_off ? " and back into tension until the surfaces separate"
+              : scene.control.sweep.unload ? " and back" : "",
+              scene.solver.algorithm.c_str());
   const std::string length = s.unit.empty() ? "" : " [" + s.unit + "]";
   std::printf("%5s %-9s %14s %14s %14s %14s %10s %6s  %s\n", "step", "phase",
               ("penetration" + length).c_str(), "mean pressure", ("mean gap" + length).c_str(),
@@ -78,38 +118,115 @@ int run_sweep(Session &session) {
   Series up{"loading", {}, {}}, down{"unloading", {}, {}};
   InterruptGuard interrupts;
   ProgressLine progress(stderr);
-  bool all_converged = true;
-  for (size_t k = 0; k < values.size(); ++k) {
-    const bool unloading = k >= loading;
-    progress.set_label("step " + std::to_string(k) + "/" + std::to_string(values.size() - 1));
+  bool all_converged = true, cancelled = false;
+  size_t step = 0;
+  PullOff pull_off;
+  // One step of the sweep: solved, printed, tabled. A step of the pull-off search that
+  // separates is what the search looks for, not a failure.
+  const auto solve_step = [&](double value, const char *phase, Series *series) {
+    progress.set_label("step " + std::to_string(step));
     const SolveReport r = solve(session.solver.get(), scene.solver.algorithm, contact, control,
-                                values[k], progress, false,
-                                scene.control.where + ": step " + std::to_string(k));
-    all_converged = all_converged && r.converged();
-    std::printf("%5zu %-9s %14.6g %14.6g %14.6g %14.6f %10lld %6.2f  %s\n", k,
-                unloading ? "unloading" : "loading", r.penetration, r.mean_pressure, r.mean_gap,
-                r.contact_fraction, static_cast<long long>(r.iterations), r.seconds,
-                termination_name(r.termination));
+                                value, progress, false,
+                                scene.control.where + ": step " + std::to_string(step));
+    const bool separated = r.termination == ASP_TERMINATION_SEPARATED;
+    all_converged = all_converged && (r.converged() || (search_pull_off && separated));
+    std::printf("%5zu %-9s %14.6g %14.6g %14.6g %14.6f %10lld %6.2f  %s\n", step, phase,
+                r.penetration, r.mean_pressure, r.mean_gap, r.contact_fraction,
+                static_cast<long long>(r.iterations), r.seconds, termination_name(r.termination));
     std::fflush(stdout);
-    table.add_row({cell(static_cast<int64_t>(k)), unloading ? "unloading" : "loading",
-                   cell(values[k]), cell(r.mean_pressure), cell(r.penetration),
-                   cell(r.mean_gap), cell(r.contact_fraction), cell(r.total_force),
-                   cell(r.iterations), cell(r.seconds), cell(r.error),
+    table.add_row({cell(static_cast<int64_t>(step)), phase, cell(value), cell(r.mean_pressure),
+                   cell(r.penetration), cell(r.mean_gap), cell(r.contact_fraction),
+                   cell(r.total_force), cell(r.iterations), cell(r.seconds), cell(r.error),
                    termination_name(r.termination),
                    stiffness_cell(session.solver.get(), contact.system.get(), r.converged())});
-    Series &series = unloading ? down : up;
-    series.x.push_back(r.penetration);
-    series.y.push_back(r.mean_pressure);
+    if (series != nullptr && !separated) {
+      series->x.push_back(r.penetration);
+      series->y.push_back(r.mean_pressure);
+    }
     if (r.termination == ASP_TERMINATION_CANCELLED) {
-      std::fprintf(stderr, "asperity: the sweep was cancelled at step %zu\n", k);
-      break;
+      std::fprintf(stderr, "asperity: the sweep was cancelled at step %zu\n", step);
+      cancelled = true;
+    }
+    ++step;
+    return r;
+  };
+  // What the unloading learns of the pull-off.
+  const auto learn = [&](double value, const SolveReport &r) {
+    if (r.converged() && (!pull_off.has_stable || value < pull_off.stable)) {
+      pull_off.stable = value;
+      pull_off.has_stable = true;
+    }
+    if (r.termination == ASP_TERMINATION_SEPARATED &&
+        (!pull_off.has_separated || value > pull_off.separated)) {
+      pull_off.separated = value;
+      pull_off.has_separated = true;
+    }
+  };
+
+  double turn_penetration = 0.0;
+  for (size_t k = 0; k < values.size() && !cancelled && !pull_off.has_separated; ++k) {
+    const bool unloading = k >= loading;
+    const SolveReport r =
+        solve_step(values[k], unloading ? "unloading" : "loading", unloading ? &down : &up);
+    if (k + 1 == loading) turn_penetration = r.penetration;
+    if (unloading) learn(values[k], r);
+  }
+  if (search_pull_off && !cancelled) {
+    // On into tension, step by step, until a load separates the surfaces.
+    double value = values.back();
+    for (int extra = 0; extra < pull_off_extra_steps && !cancelled && !pull_off.has_separated &&
+                        pull_off.has_stable && stride > 0.0;
+         ++extra) {
+      value -= stride;
+      learn(value, solve_step(value, "unloading", &down));
+    }
+    // Then the bracket halved: each trial starts again from the stable branch (the state a
+    // separating solve leaves is far from it), reached from the loading's turning point
+    // under penetration control and then at the most tensile stable load.
+    for (int halving = 0; halving < pull_off_halvings && !cancelled && pull_off.has_stable &&
+                          pull_off.has_separated;
+         ++halving) {
+      check(asp_system_reset(contact.system.get()), "resetting the state");
+      progress.set_label("back to the stable branch");
+      const SolveReport back =
+          solve(session.solver.get(), scene.solver.algorithm, contact, ASP_CONTROL_PENETRATION,
+                turn_penetration, progress, false, scene.control.where + ": pull-off search");
+      const SolveReport again =
+          back.converged()
+              ? solve(session.solver.get(), scene.solver.algorithm, contact, control,
+                      pull_off.stable, progress, false, scene.control.where + ": pull-off search")
+              : back;
+      if (!again.converged()) {
+        std::fprintf(stderr,
+                     "asperity: note: the pull-off search could not return to the stable "
+                     "branch (%s); the bracket is left as it is\n",
+                     termination_name(again.termination));
+        break;
+      }
+      const double middle = 0.5 * (pull_off.stable + pull_off.separated);
+      const SolveReport r = solve_step(middle, "pull-off", nullptr);
+      if (!r.converged() && r.termination != ASP_TERMINATION_SEPARATED) break;
+      learn(middle, r);
     }
   }
   write_wisdom(session.compute);
   // The unloading line starts where loading turned.
-  if (!down.x.empty()) {
+  if (!down.x.empty() && !up.x.empty()) {
     down.x.insert(down.x.begin(), up.x.back());
     down.y.insert(down.y.begin(), up.y.back());
+  }
+  if (search_pull_off) {
+    const double area = s.one_dimensional ? s.lx : s.lx * s.ly;
+    if (pull_off.has_stable && pull_off.has_separated)
+      std::printf("pull-off          force %.6g (mean pressure %.6g): the most tensile load "
+                  "with a stable state; the surfaces separate at %.6g (mean pressure %.6g), "
+                  "so that the pull-off force lies between the two\n",
+                  pull_off.stable * area, pull_off.stable, pull_off.separated * area,
+                  pull_off.separated);
+    else
+      std::printf("pull-off          not found: %s\n",
+                  !pull_off.has_stable ? "no unloading step reached a stable state"
+                                       : "no load tried separated the surfaces");
   }
 
   const std::string &dir = session.directory;

@@ -18,10 +18,42 @@ const char *interaction_name(InteractionKind kind) {
   return "unknown";
 }
 
+void Interaction::contact_map(const Grid &grid, const ContactState &state, double *out) const {
+  const double *g = state.gap.data();
+  loops::for_each(grid.local_pixels(), [&](std::int64_t i) { out[i] = g[i] <= 0.0 ? 1.0 : 0.0; });
+}
+
+namespace {
+// The number of local pixels i for which counted(i, in_contact) holds, in_contact saying
+// whether pixel i is in contact: from the gap with the wall, from the contact map without it
+// (a temporary field only then).
+template <class Count>
+double count_in_contact(const Interaction &interaction, const Grid &grid,
+                        const ContactState &state, Count &&counted) {
+  const double *g = state.gap.data();
+  if (interaction.has_hard_wall())
+    return loops::sum(grid.reductions(), grid.local_pixels(),
+                      [&](std::int64_t i) { return counted(i, g[i] <= 0.0) ? 1.0 : 0.0; });
+  Field map = grid.make_field();
+  interaction.contact_map(grid, state, map.data());
+  const double *c = map.data();
+  return loops::sum(grid.reductions(), grid.local_pixels(),
+                    [&](std::int64_t i) { return counted(i, c[i] > 0.0) ? 1.0 : 0.0; });
+}
+}  // namespace
+
 double Interaction::contact_fraction(const Grid &grid, const ContactState &state) const {
+  const double count = count_in_contact(*this, grid, state,
+                                        [](std::int64_t, bool in_contact) { return in_contact; });
+  return count / static_cast<double>(grid.n_pixels());
+}
+
+double Interaction::compressive_fraction(const Grid &grid, const ContactState &state) const {
   const double *p = state.pressure.data();
-  const double count = loops::sum(grid.reductions(), grid.local_pixels(),
-                                  [&](std::int64_t i) { return p[i] > 0.0 ? 1.0 : 0.0; });
+  const double count =
+      count_in_contact(*this, grid, state, [&](std::int64_t i, bool in_contact) {
+        return in_contact && p[i] > 0.0;
+      });
   return count / static_cast<double>(grid.n_pixels());
 }
 
@@ -60,17 +92,21 @@ double PotentialInteraction::energy(const Grid &grid, const ContactState &state)
          loops::sum(grid.reductions(), grid.local_pixels(), [&](std::int64_t i) { return f[i]; });
 }
 
-double PotentialInteraction::contact_fraction(const Grid &grid, const ContactState &state) const {
-  if (has_hard_wall()) return Interaction::contact_fraction(grid, state);
+void PotentialInteraction::contact_map(const Grid &grid, const ContactState &state,
+                                       double *out) const {
+  if (has_hard_wall()) {
+    Interaction::contact_map(grid, state, out);
+    return;
+  }
   // Without a wall, the pixels the potential pushes apart, phi'(g) < 0: the sign of the
   // pressure would do as well at equilibrium, but far from contact that pressure is an
-  // attraction below rounding, and its sign is noise.
+  // attraction below rounding, and its sign is noise. phi' < 0 is a property of the gap
+  // alone, which a soft wall's range resolves: it changes sign once, at the potential's
+  // minimum, where the gap is of the order of the range, not of rounding.
   Field phi, slope;
   evaluate_on(grid, state, phi, slope);
   const double *d = slope.data();
-  const double count = loops::sum(grid.reductions(), grid.local_pixels(),
-                                  [&](std::int64_t i) { return d[i] < 0.0 ? 1.0 : 0.0; });
-  return count / static_cast<double>(grid.n_pixels());
+  loops::for_each(grid.local_pixels(), [&](std::int64_t i) { out[i] = d[i] < 0.0 ? 1.0 : 0.0; });
 }
 
 }  // namespace asp

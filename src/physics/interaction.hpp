@@ -35,13 +35,28 @@ class Interaction {
  public:
   virtual ~Interaction() = default;
   virtual InteractionKind kind() const = 0;
-  // Fraction of pixels in repulsive contact (positive pressure).
-  virtual double contact_fraction(const Grid &grid, const ContactState &state) const;
+  // The contact map of a state: 1.0 on the pixels in contact, 0.0 elsewhere, into out (the
+  // grid's local pixels). With the hard wall, the pixels on the wall, g <= 0: every solve
+  // leaves g exactly 0 on its active set and >= 0 elsewhere, so that the rule is never a
+  // decision on the sign of rounding (a state kept from a soft wall may have g < 0, and
+  // those pixels touch too). Without it (soft walls), where the potential repels:
+  // PotentialInteraction.
+  virtual void contact_map(const Grid &grid, const ContactState &state, double *out) const;
+  // Whether the hard wall g >= 0 bounds the gap (every interaction but the soft walls).
+  virtual bool has_hard_wall() const { return true; }
+  // The mean of the contact map (a count of pixels over their number, exact in doubles, so
+  // that the mean of contact_map() taken anywhere gives the same number).
+  double contact_fraction(const Grid &grid, const ContactState &state) const;
+  // The fraction of pixels in contact that carry compressive (positive) pressure: the
+  // contact's repulsive core. With adhesion, pixels on the wall near a contact's edge are
+  // under tension and do not count; off contact the sign of a pressure of rounding size
+  // decides nothing, because only contact pixels are asked.
+  double compressive_fraction(const Grid &grid, const ContactState &state) const;
   // a sum_i phi(g_i) (per unit length in 1D).
   virtual double energy(const Grid &grid, const ContactState &state) const = 0;
 };
 
-// g >= 0 and phi = 0: a pixel is in contact when it carries positive pressure.
+// g >= 0 and phi = 0: a pixel is in contact when it is on the wall (g = 0).
 class HardWall final : public Interaction {
  public:
   InteractionKind kind() const override { return InteractionKind::hard_wall; }
@@ -70,9 +85,9 @@ struct ExponentialPotential {
   double d2phi(double g) const { return -work / (range * range) * std::exp(-g / range); }
 };
 
-// The hard wall with exponential adhesion. A pixel is in repulsive contact when it carries
-// positive pressure, as for the plain hard wall: pixels on the wall near the edge of a contact
-// may be under tension.
+// The hard wall with exponential adhesion. A pixel is in contact when it is on the wall
+// (g = 0), as for the plain hard wall: that is the JKR/Maugis contact area, whose pixels near
+// the edge are under tension (compressive_fraction counts the compressive core only).
 class ExponentialAdhesion final : public Interaction {
  public:
   // work > 0 and range > 0 (System::set_adhesion checks them).
@@ -88,20 +103,23 @@ class ExponentialAdhesion final : public Interaction {
   ExponentialPotential potential_;
 };
 
-// A Potential, with or without the hard wall g >= 0. With the wall a pixel is in repulsive
-// contact when it carries positive pressure, as for the hard walls; without it, where the
-// potential repels (phi'(g) < 0).
+// A Potential, with or without the hard wall g >= 0. With the wall a pixel is in contact when
+// it is on the wall (g = 0), as for the other hard walls; without it, where the potential
+// repels (phi'(g) < 0).
 class PotentialInteraction final : public Interaction {
  public:
   PotentialInteraction(InteractionKind kind, std::unique_ptr<Potential> potential)
       : kind_(kind), potential_(std::move(potential)) {}
   InteractionKind kind() const override { return kind_; }
-  // Both evaluate the potential (a user's callback may throw Error(callback)).
-  double contact_fraction(const Grid &grid, const ContactState &state) const override;
+  // Both evaluate the potential (a user's callback may throw Error(callback)); contact_map,
+  // and the fractions that use it, only without the hard wall.
+  void contact_map(const Grid &grid, const ContactState &state, double *out) const override;
   double energy(const Grid &grid, const ContactState &state) const override;
 
   const Potential &potential() const { return *potential_; }
-  bool has_hard_wall() const { return kind_ == InteractionKind::user_potential_hard_wall; }
+  bool has_hard_wall() const override {
+    return kind_ == InteractionKind::user_potential_hard_wall;
+  }
 
  private:
   // phi and phi' at the state's gaps (clipped at the wall if there is one).

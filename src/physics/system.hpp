@@ -13,10 +13,13 @@
 
 namespace asp {
 
-// The state every solver leaves behind. Pressure and gap are consistent with each other:
-// gap = K^-1 pressure - (h - max h) - penetration, to rounding, whatever the ending of the
-// solve (a gap solve's pixels on the wall keep the residue of its iterate there, of the order
-// of its error in units of P/k; the next gap solve starts them on the wall).
+// The state every solver leaves behind. With the hard wall the gap is exactly 0 on the
+// solver's active set (the pixels in contact) and >= 0 elsewhere, however the solve ended;
+// it differs from the gap the pressure makes, K^-1 pressure - (h - max h) - penetration, by
+// the residual of the solver's last iterate (see asp_system_get_field in asperity.h):
+// a pressure solve stores its pressure iterate and the projection of that gap (0 where
+// p > 0, > 0 elsewhere), a gap solve its gap iterate and the hard wall's reading
+// of the pressure. Without the wall (soft walls) they are consistent to rounding.
 struct ContactState {
   Field pressure;
   Field gap;
@@ -93,8 +96,14 @@ class System {
   void set_state_held_by_solve(bool held) { state_held_by_solve_ = held; }
   bool state_held_by_solve() const { return state_held_by_solve_; }
 
-  // Observables of the current state.
+  // Observables of the current state. Contact as Interaction::contact_map defines it: with
+  // the hard wall the pixels on the wall, without it where the potential repels.
   double contact_fraction() const { return interaction_->contact_fraction(*grid_, state_); }
+  void contact_map(double *out) const { interaction_->contact_map(*grid_, state_, out); }
+  // Pixels in contact with positive pressure.
+  double compressive_fraction() const {
+    return interaction_->compressive_fraction(*grid_, state_);
+  }
   double attractive_fraction() const;  // pixels with negative pressure
   // a times the sum of the positive pressures, and of the negative ones (<= 0).
   double repulsive_force() const;

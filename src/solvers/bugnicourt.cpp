@@ -40,7 +40,9 @@ void bugnicourt(Formulation &f, Monitor &monitor) {
   double *spare = f.spare_array();
   Field g(n), c_field(spare != nullptr ? 0 : n), d(n), h(n);
   double *c = spare != nullptr ? spare : c_field.data();
-  const double value_at_zero = f.gradient_at_zero(c);
+  // The gradient at zero is needed from the first step on: a start that is already
+  // converged (a warm start from a solved state) ends after its one evaluation.
+  double value_at_zero = 0.0;
   // f(x) = x.(g + c)/2 + f(0) for the history, without an evaluation.
   const auto value_of = [&]() {
     return monitor.wants_objective()
@@ -60,6 +62,7 @@ void bugnicourt(Formulation &f, Monitor &monitor) {
   double value = evaluate();
   Projection p = passes.gather(x, gradient, product, 0.0, 0.0);
   if (monitor.should_stop(0, observe(f, x, g.data(), p.error, value, monitor))) return;
+  value_at_zero = f.gradient_at_zero(c);
   double descent = passes.direct(x, gradient, p, d.data(), nothing)[0];
 
   int followed = 0;
@@ -231,23 +234,27 @@ void bugnicourt_separable(Formulation &f, const LocalTerm &psi, Monitor &monitor
 
 bool on_the_gap(const OptionValues &options) { return options.text("variable") == "gap"; }
 
-// On a free substrate the gap formulation takes penetration control only.
+// On a free substrate the gap formulation takes penetration and load control.
 constexpr const char *mean_gap_on_free =
     "mean-gap control of the gap formulation is offered on a periodic half-space only; on a "
     "free one the mean displacement is not a free mode whose energy can be left out";
 
 Offer offer_for(const OptionValues &options) {
   if (on_the_gap(options))
-    return {{Control::mean_gap, Control::penetration},
+    return {{Control::mean_gap, Control::penetration, Control::mean_pressure},
             {SubstrateKind::periodic, SubstrateKind::free},
             {InteractionKind::hard_wall, InteractionKind::adhesive_hard_wall},
             "variable = gap",
-            {Control::penetration},
-            mean_gap_on_free};
+            {Control::penetration, Control::mean_pressure},
+            mean_gap_on_free,
+            {},
+            ""};
   return {{Control::mean_pressure, Control::penetration},
           {SubstrateKind::periodic, SubstrateKind::free},
           {InteractionKind::hard_wall},
           "variable = pressure",
+          {},
+          "",
           {},
           ""};
 }
@@ -287,9 +294,9 @@ AlgorithmSpec bugnicourt_algorithm() {
   spec.interactions = {InteractionKind::hard_wall, InteractionKind::adhesive_hard_wall};
   spec.options = {{"variable", OptionType::choice, 0.0, 0.0, 0.0, false, {"pressure", "gap"},
                    "the unknown: pressure (the dual problem; mean-pressure or penetration "
-                   "control; no adhesion) or gap (the primal; mean-gap or penetration "
-                   "control, penetration only on a free substrate; with or without "
-                   "adhesion)"}};
+                   "control; no adhesion) or gap (the primal; mean-pressure, mean-gap or "
+                   "penetration control, not mean-gap on a free substrate; with or without "
+                   "adhesion, tensile loads included)"}};
   spec.run = run;
   return spec;
 }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "core/loops.hpp"
 #include "solvers/bound_residual.hpp"
@@ -25,9 +26,13 @@ DualFormulation::DualFormulation(System &system, Control control, double value,
   // Work arrays before anything changes, so that running out of memory changes nothing.
   spectrum_ = substrate_.make_spectrum();
   height_spectrum_ = substrate_.make_spectrum();
-  if (steps == DualSteps::polonsky_keer) {
+  if (steps != DualSteps::generic) {
     direction_ = grid_.make_field();
     pressure_spectrum_ = substrate_.make_spectrum();
+  }
+  if (steps == DualSteps::polonsky_keer_fourier) {
+    preconditioned_ = grid_.make_field();
+    substrate_.normalised_stiffness();  // made now, so that a solve allocates nothing
   }
   hold_state();
   // The gap array holds the scaled heights for their transform; every way out of a solve
@@ -184,7 +189,8 @@ double DualFormulation::error(const double *x, const double *gradient) const {
                         control_ == Control::mean_pressure);
 }
 
-double DualFormulation::contact_fraction(const double *x) const {
+double DualFormulation::contact_fraction(const double *x, const double *) const {
+  // The active set, which finish() stores as the pixels on the wall (g = 0).
   const double n = pixels_;
   const double contacts =
       loops::sum(grid_.reductions(), n_, [&](std::int64_t i) { return x[i] > 0.0 ? 1.0 : 0.0; });
@@ -406,10 +412,19 @@ bool DualFormulation::finish() {
   double *g = state_.gap.data();
   const double pressure_factor = scale_ * pressure_unit_;
   const double shift = shift_, length = length_unit_;
+  // The gap stored is exactly 0 on the active set p > 0 (where the gap the pressure makes is
+  // the residual, at most the error) and > 0 elsewhere, so that the contact (g = 0) is the
+  // active set, decided by the projection of the pressure and never by the sign of a
+  // rounding residue: off the active set a gap <= 0 (a pixel that touches the wall with no
+  // pressure, to rounding, or that the iterate leaves interpenetrating, by at most the error
+  // at convergence) is stored as the smallest positive double. No ending leaves the surfaces
+  // interpenetrating.
+  constexpr double off_the_wall = std::numeric_limits<double>::denorm_min();
   const double check = loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
     p[i] *= pressure_factor;
-    g[i] = (g[i] - shift) * length;
-    return 0.0 * (p[i] + g[i]);  // NaN if anything overflowed
+    const double gi = (g[i] - shift) * length;
+    g[i] = p[i] > 0.0 ? 0.0 : (gi > 0.0 || std::isnan(gi) ? gi : off_the_wall);
+    return 0.0 * (p[i] + gi);  // NaN if anything overflowed
   });
   state_.penetration = delta_ * length;
   system_.remember_reference_pressure(pressure_unit_);

@@ -30,8 +30,8 @@ namespace asp {
 
 // Whether the formulation will run Polonsky & Keer's steps, which keep a search direction and
 // the pressure's spectrum between iterations (16 bytes per pixel a generic solver does not
-// need).
-enum class DualSteps { generic, polonsky_keer };
+// need), and with the Fourier preconditioner, which keeps the preconditioned residual (8 more).
+enum class DualSteps { generic, polonsky_keer, polonsky_keer_fourier };
 
 class DualFormulation final : public ScaledFormulation {
  public:
@@ -56,7 +56,7 @@ class DualFormulation final : public ScaledFormulation {
   double mean_target() const override { return target_; }
   double error(const double *x, const double *gradient) const override;
 
-  double contact_fraction(const double *x) const override;
+  double contact_fraction(const double *x, const double *) const override;
   double reported_objective(const double *x, const double *gradient,
                             double value) const override;
 
@@ -88,6 +88,24 @@ class DualFormulation final : public ScaledFormulation {
   // it were alone, k (-g).
   void admit_interpenetrating_pixels();
 
+  // ---- The Fourier preconditioner (dual_preconditioner.cpp; needs
+  // DualSteps::polonsky_keer_fourier)
+  //
+  // The compliance K^-1 is a Fourier multiplier 2/(E*|q|) on a periodic substrate, so the
+  // condition number of the system on the contact set grows like the grid's size. Its
+  // inverse, the stiffness, applied to the residual r (the centred gap on the contact set,
+  // 0 elsewhere) and restricted to the contact set again, z = P K P r, undoes most of that
+  // (Vollebregt, J. Comput. Phys. 257 (2014) 333). Under load control z is made mean-free on
+  // the contact set, so that a step along it keeps the mean pressure. On a free substrate K is
+  // the stiffness of the padded surface, and P also restricts to the box.
+
+  // z of the current gap (one transform pair); returns r.z, the norm that replaces |r|^2 in
+  // the conjugate-gradient coefficient beta.
+  double precondition();
+  // As update_direction, with z in place of the gap: t = z + beta t_old on the contact set.
+  // Returns the error of the current iterate.
+  double update_preconditioned_direction(double beta);
+
   bool finish() override;
 
  private:
@@ -101,6 +119,8 @@ class DualFormulation final : public ScaledFormulation {
   double compliance_factor_;  // k: turns the substrate's K^-1 into the scaled one
 
   Field direction_;         // t
+  Field preconditioned_;    // z = P K P r (the Fourier preconditioner's residual)
+  double preconditioned_mean_ = 0.0;  // mean of z on the contact set, removed under load control
   Spectrum spectrum_;       // work; holds the spectrum of t between curvature() and the next gap
   Spectrum pressure_spectrum_;  // the spectrum of the pressure array
   Spectrum height_spectrum_;  // FFT of the scaled (h - max h), over the transform's points

@@ -113,12 +113,13 @@ class Formulation {
   // own passes rely on that.
   virtual double error(const double *x, const double *gradient) const = 0;
 
-  // For the monitor's history: the fraction of pixels in repulsive contact at x; the objective
+  // For the monitor's history: the fraction of pixels in contact at x, by the rule the state
+  // written back from x would follow (System::contact_fraction), given the gradient at x; the objective
   // as histories report it, from value_and_gradient's value and gradient at x (under a mean
   // constraint its constant multiplier term uses the multiplier's current estimate, so that
   // all solvers report the same number for the same iterate); and the factor that turns
   // objective values into the physical energy.
-  virtual double contact_fraction(const double *x) const = 0;
+  virtual double contact_fraction(const double *x, const double *gradient) const = 0;
   virtual double reported_objective(const double *x, const double *gradient,
                                     double value) const = 0;
   virtual double energy_unit() const = 0;
@@ -130,6 +131,16 @@ class Formulation {
   // writes at the end), or null. A solver may take it for one of its work arrays, so that
   // the largest scenes need one array fewer; its values at the start are undefined.
   virtual double *spare_array() { return nullptr; }
+
+  // Under load control, whether the iterate x shows that the load pulls the surfaces apart
+  // for good, so that no stable state lies ahead (the monitor then ends the solve as
+  // separated: a minimiser would follow the separation without end). Each formulation that
+  // can tell says by what rule; false where that cannot happen (other controls, compressive
+  // loads, no adhesion to hold the surfaces together).
+  virtual bool separates(const double *x) const {
+    (void)x;
+    return false;
+  }
 
   // Writes the iterate back into the system's state in physical units, with everything that
   // follows from it (gap, penetration). Returns false if a physical value is not finite (the

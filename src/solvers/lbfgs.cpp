@@ -31,13 +31,10 @@ class Lbfgs {
         trial_gradient_(static_cast<std::size_t>(n_)),
         x_old_(static_cast<std::size_t>(n_)),
         d_(static_cast<std::size_t>(n_)),
+        s_(static_cast<std::size_t>(memory)),
+        y_(static_cast<std::size_t>(memory)),
         alpha_(static_cast<std::size_t>(memory)),
-        rho_(static_cast<std::size_t>(memory)) {
-    for (int j = 0; j < memory; ++j) {
-      s_.emplace_back(static_cast<std::size_t>(n_));
-      y_.emplace_back(static_cast<std::size_t>(n_));
-    }
-  }
+        rho_(static_cast<std::size_t>(memory)) {}
 
   void run(Monitor &monitor) {
     value_ = f_.value_and_gradient(x_, g_.data());
@@ -158,6 +155,13 @@ class Lbfgs {
   // so that a pair that fails the condition costs the oldest one.
   void update_memory() {
     const int j = (newest_ + 1) % memory_;
+    // A slot's arrays are made when it is first filled: a solve that converges in a few
+    // iterations (a warm start) makes only the pairs it stores, one that starts converged
+    // none.
+    if (s_[j].empty()) {
+      s_[j] = Field(static_cast<std::size_t>(n_));
+      y_[j] = Field(static_cast<std::size_t>(n_));
+    }
     double *s = s_[j].data(), *y = y_[j].data();
     const double *x = x_, *x_old = x_old_.data(), *g = g_.data(), *g_new = trial_gradient_.data();
     const auto sums = loops::sums<2>(f_.reductions(), n_, [&](std::int64_t i, double *sum) {

@@ -441,20 +441,30 @@ class Lbfgsb {
 bool on_the_gap(const OptionValues &options) { return options.text("variable") == "gap"; }
 
 // L-BFGS-B keeps the unknowns in a box, but no mean-value equality: it serves penetration
-// control on either variable.
+// control on either variable, and load control on the gap, whose formulation takes the load
+// as a work term without a constraint (not with a user's potential: see
+// primal_formulation.hpp).
+constexpr const char *load_with_potential =
+    "under a tensile load the separation of the surfaces cannot be told from a user's "
+    "potential's values";
+
 Offer offer_for(const OptionValues &options) {
   if (on_the_gap(options))
-    return {{Control::penetration},
+    return {{Control::penetration, Control::mean_pressure},
             {SubstrateKind::periodic, SubstrateKind::free},
             {InteractionKind::hard_wall, InteractionKind::adhesive_hard_wall,
              InteractionKind::user_potential_hard_wall},
             "variable = gap",
             {},
-            ""};
+            "",
+            {InteractionKind::hard_wall, InteractionKind::adhesive_hard_wall},
+            load_with_potential};
   return {{Control::penetration},
           {SubstrateKind::periodic, SubstrateKind::free},
           {InteractionKind::hard_wall},
           "variable = pressure",
+          {},
+          "",
           {},
           ""};
 }
@@ -491,8 +501,9 @@ AlgorithmSpec lbfgsb_algorithm() {
       "Byrd, Lu, Nocedal & Zhu's limited-memory BFGS for bound constraints (L-BFGS-B, SIAM "
       "J. Sci. Comput. 1995; thesis section 3.1.6) on the pressure (the complementary energy, "
       "as for pk; no adhesion) or on the gap (the elastic energy plus the interaction "
-      "energy; with or without adhesion), under penetration control";
-  spec.controls = {Control::penetration};
+      "energy; with or without adhesion), under penetration control, and on the gap also "
+      "under load control";
+  spec.controls = {Control::penetration, Control::mean_pressure};
   spec.offer_for = offer_for;
   spec.substrates = {SubstrateKind::periodic, SubstrateKind::free};
   spec.interactions = {InteractionKind::hard_wall, InteractionKind::adhesive_hard_wall,
@@ -501,7 +512,8 @@ AlgorithmSpec lbfgsb_algorithm() {
       {"variable", OptionType::choice, 0.0, 0.0, 0.0, false, {"pressure", "gap"},
        "the unknown: pressure (the dual problem; no adhesion) or gap (the primal; with or "
        "without adhesion, or a user's potential with the hard wall); penetration control on "
-       "either"},
+       "either, mean-pressure control on the gap (tensile loads included; not with a "
+       "user's potential)"},
       {"memory", OptionType::integer, 5, 1, 100, false, {},
        "the number of step and gradient-change pairs the quasi-Newton matrix keeps (16 bytes "
        "per pixel each)"},

@@ -12,6 +12,9 @@ const char *termination_name(Termination termination) {
     case Termination::cancelled: return "cancelled";
     case Termination::stalled: return "stalled";
     case Termination::breakdown: return "numerical breakdown";
+    case Termination::separated:
+      return "no stable state under this load: the surfaces separate (the tensile load "
+             "exceeds the pull-off force)";
   }
   return "unknown";
 }
@@ -65,6 +68,12 @@ bool Monitor::should_stop(std::int64_t iteration, const IterationState &state) {
     cancel = asked > 0.0;
   }
 
+  // A state the load pulls apart is no equilibrium, whatever its error (and it has no
+  // stable state ahead): it ends the solve before anything else is asked.
+  if (state.separated) {
+    termination_ = Termination::separated;
+    return true;
+  }
   // A state that met the tolerance is converged even if the callback also asked to stop.
   if (state.error <= settings_.tolerance) {
     termination_ = Termination::converged;

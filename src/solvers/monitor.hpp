@@ -15,7 +15,7 @@
 
 namespace asp {
 
-enum class Termination { converged, iteration_limit, cancelled, stalled, breakdown };
+enum class Termination { converged, iteration_limit, cancelled, stalled, breakdown, separated };
 const char *termination_name(Termination termination);
 
 // The C signature of asp_progress_fn: non-zero return cancels.
@@ -43,6 +43,8 @@ struct IterationState {
   double contact_fraction = 0.0;
   std::int64_t evaluations = 0;
   std::int64_t transforms = 0;
+  // The formulation's word that the load pulls the surfaces apart (Formulation::separates).
+  bool separated = false;
 };
 
 // One row per iteration; columns in the order of the ASP_HISTORY_* constants.

@@ -13,18 +13,10 @@ namespace asp {
 
 namespace {
 
-// A pixel on the wall keeps, in the stored state, the gap that the stored pressure makes
-// there: the residue of what the hard wall's reading set aside, measured at 0.5 to 4.3 times
-// the iterate's error (in units of P/k: both are pressures over the pixel stiffness) on
-// converged 32^2 and 64^2 scenes. Where it is at most this many times the error, and the
-// error small enough for that to be at most `largest_residue_on_wall`, it is the error's and
-// the pixel is set on the wall exactly.
-constexpr double residue_per_error = 8.0;
-// The largest such residue, in units of P/k: a gap set to 0 leaves the state inconsistent by
-// at most this, 1e-6 of the reference pressure in the elastic pressure it makes. A state
-// whose error is larger (a solve stopped early, a loose tolerance) keeps the gaps its
-// pressure makes on every pixel.
-constexpr double largest_residue_on_wall = 1e-6;
+constexpr const char *mean_pressure_with_potential =
+    "mean-pressure control of the gap formulation takes the hard wall with or without "
+    "exponential adhesion, not a user's potential (whose separation under a tensile load "
+    "cannot be told from its values); use penetration control";
 
 }  // namespace
 
@@ -43,6 +35,15 @@ PrimalFormulation::PrimalFormulation(System &system, Control control, double val
   const PotentialInteraction *user = potential_interaction(system.interaction());
   if (user != nullptr && user->has_hard_wall())
     potential_ = user->potential().in_units(length_unit_, pressure_unit_);
+  if (control == Control::mean_pressure && potential_ != nullptr)
+    throw Error(Status::unsupported, mean_pressure_with_potential);
+  // The load spread over the displacement's surface: the mean pressure on the grid, N/M of
+  // it on each of the M points of a surface beyond the grid (N pixels).
+  if (control == Control::mean_pressure) {
+    double surface = static_cast<double>(unknowns_);
+    grid_.reductions().combine_sums(&surface, 1);
+    load_ = target_ * (pixels_ / surface);
+  }
 
   // Work arrays before anything changes, so that running out of memory changes nothing.
   if (potential_ != nullptr) {
@@ -69,7 +70,12 @@ PrimalFormulation::PrimalFormulation(System &system, Control control, double val
     counters_.transforms += 2;
     double *outside = surface_unknowns_.data();
     const double per_length = 1.0 / length_unit_;
-    loops::for_each(unknowns_ - n_, [&](std::int64_t i) { outside[n_ + i] *= per_length; });
+    // Under load control the unknowns there are the displacement less the penetration.
+    const double offset =
+        control == Control::mean_pressure ? state_.penetration * per_length : 0.0;
+    loops::for_each(unknowns_ - n_, [&](std::int64_t i) {
+      outside[n_ + i] = outside[n_ + i] * per_length - offset;
+    });
     std::copy(state_.gap.data(), state_.gap.data() + n_, surface_unknowns_.data());
   }
   // A pixel that carries compressive pressure is in contact, on the wall: its stored gap is
@@ -95,10 +101,10 @@ PrimalFormulation::PrimalFormulation(System &system, Control control, double val
 
 double PrimalFormulation::apply_stiffness(const double *field, double *out) {
   // K~/k with the transform's 1/N: the scaled stiffness, pixel stiffness 1. The q = 0 entry is
-  // the first: without K~(0) under mean-gap control.
+  // the first: without K~(0) under mean-gap and load control.
   substrate_.surface_forward(field, spectrum_.data());
   Complex *s = spectrum_.data();
-  if (control_ == Control::mean_gap && substrate_.layout().is_mean(0)) s[0] = 0.0;
+  if (control_ != Control::penetration && substrate_.layout().is_mean(0)) s[0] = 0.0;
   const double *k = stiffness_.data();
   const double factor = 1.0 / substrate_.pixel_stiffness();
   // u.K u = sum over all modes of the stiffness times |U_q|^2 (Parseval; the 1/N is in the
@@ -119,13 +125,29 @@ double PrimalFormulation::apply_stiffness(const double *field, double *out) {
 
 double PrimalFormulation::elastic_pressure(const double *x, double *out) {
   // u = x + (h - max h)/l + delta on the grid, u = x beyond it, into out, then p = K u,
-  // scaled, over it (the transform reads u before it writes p).
+  // scaled, over it (the transform reads u before it writes p). Under load control the load
+  // is added to p, and the sum of x, read before out (which may be x) is written, gives its
+  // work.
   const double per_length = 1.0 / length_unit_, top = max_height_, delta = penetration_;
-  loops::for_each(n_, [&](std::int64_t i) {
-    out[i] = x[i] + (heights_[i] - top) * per_length + delta;
-  });
+  const auto displacement = [&](std::int64_t i) {
+    const double xi = x[i];
+    out[i] = xi + (heights_[i] - top) * per_length + delta;
+    return xi;
+  };
+  double sum = 0.0;
+  if (control_ == Control::mean_pressure) {
+    sum = loops::sum(grid_.reductions(), n_, displacement) +
+          loops::sum(grid_.reductions(), unknowns_ - n_,
+                     [&](std::int64_t i) { return x[n_ + i]; });
+  } else {
+    loops::for_each(n_, displacement);
+  }
   if (out != x) std::copy(x + n_, x + unknowns_, out + n_);
-  return apply_stiffness(out, out);
+  const double energy = apply_stiffness(out, out);
+  if (control_ != Control::mean_pressure) return energy;
+  const double load = load_;
+  loops::for_each(unknowns_, [&](std::int64_t i) { out[i] += load; });
+  return energy + 2.0 * load * sum;
 }
 
 double PrimalFormulation::value_and_gradient(const double *x, double *gradient) {
@@ -215,13 +237,30 @@ double PrimalFormulation::curvature_bound(const double *direction,
          });
 }
 
+bool PrimalFormulation::separates(const double *x) const {
+  // Only a tensile load on the adhesive wall pulls the surfaces apart (a user's potential
+  // takes no load control; the plain wall takes no tensile load).
+  if (control_ != Control::mean_pressure || !(target_ < 0.0) || !adhesive_) return false;
+  if (contact_fraction(x, nullptr) > 0.0) return false;
+  // No pixel on the wall. Along the separation x + t (every unknown, t >= 0; the elastic
+  // energy does not change, the mean mode being out of it) the objective's slope is
+  // sum_i phi'(x_i + t) + N pbar and its curvature sum_i phi''(x_i + t) < 0: where the slope
+  // is negative at t = 0 it falls ever faster, without bound, and no minimum lies ahead.
+  const ExponentialPotential phi = adhesion_;
+  const double pull =
+      loops::sum(grid_.reductions(), n_, [&](std::int64_t i) { return phi.dphi(x[i]); });
+  return pull + target_ * pixels_ < 0.0;
+}
+
 double PrimalFormulation::error(const double *x, const double *gradient) const {
   // Under mean-gap control the mean pressure is the multiplier of the mean.
   return bound_residual(grid_.reductions(), unknowns_, n_, x, gradient, 0.0,
                         control_ == Control::mean_gap);
 }
 
-double PrimalFormulation::contact_fraction(const double *x) const {
+double PrimalFormulation::contact_fraction(const double *x, const double *) const {
+  // The pixels on the wall: finish() stores the iterate's gap, whose active set holds exact
+  // zeros (the projection onto x >= 0 makes them).
   const double n = pixels_;
   return loops::sum(grid_.reductions(), n_,
                     [&](std::int64_t i) { return x[i] > 0.0 ? 0.0 : 1.0; }) /
@@ -245,7 +284,24 @@ double PrimalFormulation::interaction_slopes(const double *gap, double *slope) {
   return slope0;
 }
 
+void PrimalFormulation::touch_at_zero_load() {
+  // Without adhesion and without load every uniform separation of a state is as good (the
+  // elastic energy sees no mean mode, the load does no work): the state reported is the one
+  // that touches, the limit of small loads, as under penetration control at delta = 0.
+  if (control_ != Control::mean_pressure || load_ != 0.0 || adhesive_ || potential_ != nullptr)
+    return;
+  double *x = variable().data();
+  const double lowest =
+      -loops::maximum(grid_.reductions(), n_, [&](std::int64_t i) { return -x[i]; });
+  if (!(lowest > 0.0)) return;
+  // The lowest pixels exactly on the wall.
+  loops::for_each(unknowns_, [&](std::int64_t i) {
+    x[i] = i < n_ && x[i] == lowest ? 0.0 : x[i] - lowest;
+  });
+}
+
 bool PrimalFormulation::finish() {
+  touch_at_zero_load();
   // The elastic pressure of the iterate, p = K u (scaled), into the state's pressure array
   // (on a surface beyond the grid, the grid's part of it; beyond, it is the residual).
   double *p = state_.pressure.data();
@@ -289,69 +345,57 @@ bool PrimalFormulation::finish() {
   // the interaction exerts there (none without adhesion, -phi'(g) with it: at the optimum K u
   // differs from it only by the residual); on the wall K u, clipped below at -phi'(0)
   // (0 without adhesion), since the wall can push but not pull, and what lies below is the
-  // residual of the iterate. Then the gap that this pressure makes, so that the state is
-  // consistent and its contact set is that of the iterate. The largest change the reading
-  // makes is the iterate's error (the residual of the optimality conditions, with the
-  // multiplier above under mean-gap control).
-  const double pressure = pressure_unit_, n = pixels_;
-  const auto reading = loops::sums_and_max<1>(
-      grid_.reductions(), n_, [&](std::int64_t i, double *sum, double &largest) {
-        const double on_wall = p[i] > wall_tension ? p[i] : wall_tension;
-        const double read = interacting ? (g[i] > 0.0 ? -slope[i] : on_wall)
-                                        : (g[i] > 0.0 ? 0.0 : (p[i] > 0.0 ? p[i] : 0.0));
-        const double change = std::fabs(read - p[i]);
-        largest = change > largest ? change : largest;
-        p[i] = read * pressure;
-        sum[0] += p[i] / n;
-      });
-  const double mean_pressure = reading[0], error = reading[1] > 0.0 ? reading[1] : 0.0;
-  Field displacement = grid_.make_field();
-  double *u = displacement.data();
-  substrate_.forward(p, spectrum_.data());
-  Complex *s = spectrum_.data();
-  const double *c = substrate_.normalised_compliance().data();
-  loops::for_each(static_cast<std::int64_t>(spectrum_.size()),
-                  [&](std::int64_t q) { s[q] *= c[q]; });
-  substrate_.backward(spectrum_.data(), u);
-  counters_.transforms += 2;
-  // Under mean-gap control the penetration keeps the mean gap: mean u = pbar/K~(0), so
-  // delta = pbar/K~(0) - mean gap - mean(h - max h).
+  // residual of the iterate. The gap stored is the iterate's own: >= 0 however the solve
+  // ended, and exactly 0 on its active set, so that the contact set (g = 0) is the solver's
+  // and the last history row counts the same pixels. The displacement the stored pressure
+  // makes differs from the one of that gap by K^-1 of what the reading changed, at most the
+  // iterate's error (in units of P) on each pixel.
+  const double pressure = pressure_unit_, n = pixels_, length = length_unit_;
+  const double mean_pressure = loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
+    const double on_wall = p[i] > wall_tension ? p[i] : wall_tension;
+    const double read = interacting ? (g[i] > 0.0 ? -slope[i] : on_wall)
+                                    : (g[i] > 0.0 ? 0.0 : (p[i] > 0.0 ? p[i] : 0.0));
+    p[i] = read * pressure;
+    return p[i] / n;
+  });
+  const auto sums = loops::sums<2>(grid_.reductions(), n_, [&](std::int64_t i, double *sum) {
+    const double gi = g[i] * length;
+    g[i] = gi > 0.0 || std::isnan(gi) ? gi : 0.0;  // -0.0 and a warm start's < 0 onto the wall
+    sum[0] += g[i] / n;
+    sum[1] += 0.0 * (p[i] + g[i]);  // NaN if anything overflowed
+  });
+  // Under mean-gap control the penetration follows from the convention mean u = pbar/K~(0):
+  // delta = pbar/K~(0) - mean g - mean(h - max h), with the mean of the gap stored.
   const double top = max_height_;
   const double mean_height = loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
     return (heights_[i] - top) / n;
   });
+  // Under load control the penetration is the one the stored state says: the mean of
+  // u - (h - max h) - g over the grid, u = K^-1 p the displacement of the stored pressure (one
+  // FFT pair; on a periodic substrate this is pbar/K~(0) - mean g - mean(h - max h), as under
+  // mean-gap control, and on a free one the padded operator's).
+  double load_penetration = 0.0;
+  if (control_ == Control::mean_pressure) {
+    Field displacement = grid_.make_field();
+    double *u = displacement.data();
+    substrate_.forward(p, spectrum_.data());
+    Complex *s = spectrum_.data();
+    const double *c = substrate_.normalised_compliance().data();
+    loops::for_each(static_cast<std::int64_t>(spectrum_.size()),
+                    [&](std::int64_t q) { s[q] *= c[q]; });
+    substrate_.backward(spectrum_.data(), u);
+    counters_.transforms += 2;
+    load_penetration = loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
+      return (u[i] - (heights_[i] - top) - g[i]) / n;
+    });
+  }
   const double delta = control_ == Control::mean_gap
-                           ? mean_pressure / substrate_.k0() - target_ * length_unit_ - mean_height
-                           : penetration_ * length_unit_;
-  // The gap that pressure makes. On the iterate's wall pixels it is the residue of what the
-  // reading set aside, not 0: at the optimum of the order of the error, and far from it (a
-  // solve that a loose tolerance stopped at its starting point) anything. A residue the
-  // error accounts for (residue_per_error, largest_residue_on_wall above) is set to 0, so
-  // that a converged state has its contact pixels on the wall; the others keep the gap the
-  // pressure makes, so that the state stays consistent, and a warm start puts the pixels
-  // that carry pressure back on the wall (the constructor). Under mean-gap control the
-  // penetration then takes up what the pixels set to 0 held of the mean, so that the mean
-  // gap is the one asked for.
-  const double residue_allowed =
-      residue_per_error * error <= largest_residue_on_wall ? residue_per_error * error : 0.0;
-  const double snap = residue_allowed * length_unit_;
-  const auto computed = [&](std::int64_t i) { return u[i] - (heights_[i] - top) - delta; };
-  const auto set_on_wall = [&](std::int64_t i) {
-    return !(g[i] > 0.0) && std::fabs(computed(i)) <= snap;
-  };
-  const auto residues = loops::sums<3>(grid_.reductions(), n_, [&](std::int64_t i, double *sum) {
-    const bool on_wall = set_on_wall(i);
-    sum[0] += on_wall ? computed(i) : 0.0;
-    sum[1] += on_wall ? 0.0 : 1.0;
-    sum[2] += 0.0 * (p[i] + computed(i));  // NaN if anything overflowed
-  });
-  const double shift =
-      control_ == Control::mean_gap && residues[1] > 0.0 ? residues[0] / residues[1] : 0.0;
-  loops::for_each(n_, [&](std::int64_t i) { g[i] = set_on_wall(i) ? 0.0 : computed(i) + shift; });
-  const double check = residues[2];
-  state_.penetration = delta - shift;
+                           ? mean_pressure / substrate_.k0() - sums[0] - mean_height
+                       : control_ == Control::mean_pressure ? load_penetration
+                                                            : penetration_ * length;
+  state_.penetration = delta;
   system_.remember_reference_pressure(pressure_unit_);
-  return check == 0.0 && std::isfinite(delta);
+  return sums[1] == 0.0 && std::isfinite(delta);
 }
 
 }  // namespace asp

@@ -17,14 +17,38 @@
 // surface_size): the unknowns are the gap on the box, then the displacement of the surface
 // outside it, free of the bound. At the optimum the pressure K u vanishes there, so that the
 // energy and the pressure on the box are those of the free half-space (Love's coefficients);
-// only penetration control is offered there.
+// penetration and load control are offered there, not mean-gap control.
+//
+// Under load control (mean pressure pbar, total force F = pbar A) the equilibrium is a
+// minimum of E(g, delta) - F delta over the gap and the penetration: the Legendre transform
+// of the energy at given penetration, whose minima are the stable states (dF/d delta > 0)
+// and whose other stationary states are saddles, so that a minimiser never settles on an
+// unstable branch. delta moves the displacement of the whole surface uniformly, its q = 0
+// mode only, once the unknowns beyond a free substrate's box are taken as the displacement
+// less delta (as the gap is on the box). Minimising over delta in closed form leaves
+//     E(g) = (1/2) u.K' u + a sum_i phi(g_i) + (F/M) sum over the M surface points of x_i,
+// K' the stiffness without its q = 0 mode and x the unknowns (the gap on the box, the
+// displacement less delta beyond it): the load is a uniform pressure F/(M a) on each
+// unknown, pbar itself on a periodic substrate (M = N, the mean-gap formulation's objective
+// with the work pbar A mean(g) and no constraint). It needs no K~(0), so that the pressure
+// field does not depend on that convention, and no extra unknown or multiplier: the solvers
+// see a plain bound-constrained objective, the mean pressure being the gradient's part
+// that the load sets. The penetration comes back at the end from the stored pressure's
+// displacement, as the mean of u - (h - max h) - g over the grid. Along the uniform
+// separation of the surface the elastic energy is flat: past the pull-off force, with no
+// pixel on the wall, the objective falls without bound (the adhesive energy is concave), and
+// separates() says so, so that the solve ends there instead of following the surfaces apart.
+// A user's potential is not taken under load control: nothing bounds its curvature, so
+// that the separation could not be told.
 //
 // Units as for the dual formulation (SceneUnits): the gradient is the pressure over P, and the
 // error is the largest residual of the optimality conditions in units of P.
 //
-// During a solve the system's gap array holds the scaled iterate; finish() stores the hard
-// wall's reading of it, the pressure, then the gap that pressure makes and the penetration.
-// With adhesion the pressure where the gap is open is the interaction's, -phi'(g) (tensile).
+// During a solve the system's gap array holds the scaled iterate; finish() stores it as the
+// gap (>= 0, exactly 0 on the active set), the hard wall's reading of it as the pressure, and
+// the penetration. With adhesion the pressure where the gap is open is the interaction's,
+// -phi'(g) (tensile). The displacement K^-1 p of that pressure differs from the gap's by the
+// residual of the iterate (asp_system_get_field in asperity.h says how much).
 #pragma once
 
 #include "physics/system.hpp"
@@ -67,8 +91,12 @@ class PrimalFormulation final : public ScaledFormulation {
   double lower_bound() const override { return 0.0; }
   bool constrains_mean() const override { return control_ == Control::mean_gap; }
   double mean_target() const override { return target_; }
+  // Under a tensile load on the adhesive wall: no pixel on the wall, and the objective
+  // falling along the uniform separation of the whole surface (where it then falls without
+  // bound: the adhesive energy is concave).
+  bool separates(const double *x) const override;
   double error(const double *x, const double *gradient) const override;
-  double contact_fraction(const double *x) const override;
+  double contact_fraction(const double *x, const double *gradient) const override;
   double reported_objective(const double *, const double *, double value) const override {
     return value;
   }
@@ -90,9 +118,16 @@ class PrimalFormulation final : public ScaledFormulation {
   double value_and_gradient_of_potential(const double *x, double *gradient);
   // phi'(g) of the interaction at the gaps (clipped at the wall) into slope; returns phi'(0).
   double interaction_slopes(const double *gap, double *slope);
+  // For finish() under load control without adhesion at zero load: the iterate moved
+  // uniformly until it touches the wall (its energy unchanged).
+  void touch_at_zero_load();
 
   const Field &stiffness_;  // normalised: backward(stiffness * forward(u)) = K u
-  double penetration_;  // scaled, in u (0 under mean-gap control, where it does not matter)
+  // Scaled, in u (0 under mean-gap and load control, where it does not matter).
+  double penetration_;
+  // Under load control, the scaled pressure the load puts on each unknown of the surface (0
+  // otherwise).
+  double load_ = 0.0;
 
   Spectrum spectrum_;
   LocalTerm local_term_;

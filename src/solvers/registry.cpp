@@ -86,7 +86,7 @@ void check_request(const AlgorithmSpec &algorithm, const OptionValues &options,
                           ? algorithm.offer_for(options)
                           : Offer{algorithm.controls, algorithm.substrates,
                                   algorithm.interactions, "", algorithm.free_controls,
-                                  algorithm.free_reason};
+                                  algorithm.free_reason, {}, ""};
   const std::string solver =
       "solver '" + algorithm.name + "'" +
       (offer.condition.empty() ? "" : " with " + offer.condition);
@@ -112,6 +112,13 @@ void check_request(const AlgorithmSpec &algorithm, const OptionValues &options,
     throw Error(Status::unsupported, solver + " does not handle " + (vowel ? "an " : "a ") +
                                          interaction +
                                          " (it handles: " + names(i, interaction_name) + ")");
+  const auto &l = offer.load_interactions;
+  if (control == Control::mean_pressure && !l.empty() &&
+      std::find(l.begin(), l.end(), system.interaction().kind()) == l.end())
+    throw Error(Status::unsupported, solver + " does not offer mean_pressure control with " +
+                                         (vowel ? "an " : "a ") + interaction +
+                                         " (it offers it with: " + names(l, interaction_name) +
+                                         "): " + offer.load_reason);
 }
 
 std::string describe(const AlgorithmSpec &algorithm) {

@@ -47,6 +47,10 @@ struct Offer {
   // them), and why the others are not.
   std::vector<Control> free_controls;
   std::string free_reason;
+  // The interactions taken under mean-pressure control when fewer than `interactions`
+  // (empty: all of them), and why the others are not.
+  std::vector<InteractionKind> load_interactions;
+  std::string load_reason;
 };
 
 struct AlgorithmSpec {

@@ -74,7 +74,7 @@ double SoftFormulation::largest_interaction_curvature() const {
   return largest > 0.0 ? largest : 0.0;
 }
 
-double SoftFormulation::contact_fraction(const double *) const {
+double SoftFormulation::contact_fraction(const double *, const double *) const {
   const double *dphi = dphi_.data();
   const double load = load_;
   return loops::sum(grid_.reductions(), n_,

@@ -36,7 +36,7 @@ class SoftFormulation : public ScaledFormulation {
   double mean_target() const override { return 0.0; }
   // The pixels whose interaction pushes the surfaces apart (phi'(g) < 0) at the last point
   // the potential was evaluated at, which is the iterate every solver reports.
-  double contact_fraction(const double *x) const override;
+  double contact_fraction(const double *x, const double *gradient) const override;
   double reported_objective(const double *, const double *, double value) const override {
     return value;
   }

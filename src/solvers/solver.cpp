@@ -197,9 +197,10 @@ IterationState observe(const Formulation &f, const double *x, const double *g, d
   state.error = error;
   state.objective =
       monitor.wants_objective() ? f.reported_objective(x, g, value) * f.energy_unit() : 0.0;
-  state.contact_fraction = monitor.wants_objective() ? f.contact_fraction(x) : 0.0;
+  state.contact_fraction = monitor.wants_objective() ? f.contact_fraction(x, g) : 0.0;
   state.evaluations = f.counters().evaluations;
   state.transforms = f.counters().transforms;
+  state.separated = f.separates(x);
   return state;
 }
 

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: GPL-2.0-or-later */
 /* Adhesion through the public header (asp_system_set_adhesion and the ASP_ATTRACTIVE_*,
- * ASP_REPULSIVE_FORCE, ASP_INTERACTION_ENERGY, ASP_WORK_OF_ADHESION and ASP_ADHESION_RANGE
- * keys): bad arguments refused by name with nothing changed; solvers without adhesion
+ * ASP_COMPRESSIVE_FRACTION, ASP_REPULSIVE_FORCE, ASP_INTERACTION_ENERGY, ASP_WORK_OF_ADHESION
+ * and ASP_ADHESION_RANGE keys): bad arguments refused by name with nothing changed; solvers without adhesion
  * refusing it with a message naming the interaction and the option; a paraboloid pulled by
  * adhesion solved by "bugnicourt" on the gap, with observables that agree with the fields;
  * and work 0 back to the plain hard wall. */
@@ -23,8 +23,8 @@ int main(void) {
   double *gap = malloc(N * N * sizeof(double));
   double *pressure = malloc(N * N * sizeof(double));
   double value = 0.0, repulsive = 0.0, attractive = 0.0, total = 0.0, energy = 0.0;
-  double fraction = 0.0, attractive_fraction = 0.0, sum = 0.0;
-  int converged = 0, i = 0, negative = 0, positive = 0, too_tensile = 0;
+  double fraction = 0.0, attractive_fraction = 0.0, compressive_fraction = 0.0, sum = 0.0;
+  int converged = 0, i = 0, negative = 0, positive = 0, on_wall = 0, too_tensile = 0;
 
   CHECK_OK(asp_grid_create_2d(N, N, box, box, &grid));
   CHECK_OK(asp_grid_set_fft_planning(grid, ASP_FFT_ESTIMATE));
@@ -89,7 +89,10 @@ int main(void) {
   CHECK(attractive < 0.0);
   CHECK(total < 0.0); /* at delta = 0 adhesion wins: the sphere is pulled */
   CHECK_NEAR(repulsive + attractive, total, 1e-12 * (repulsive - attractive));
-  CHECK(fraction > 0.0 && attractive_fraction > 0.0 && fraction + attractive_fraction <= 1.0);
+  CHECK_OK(asp_system_get(system, ASP_COMPRESSIVE_FRACTION, &compressive_fraction));
+  /* The contact (g = 0) holds the compressive core and the tensile ring around it. */
+  CHECK(compressive_fraction > 0.0 && compressive_fraction < fraction);
+  CHECK(attractive_fraction > 0.0 && compressive_fraction + attractive_fraction <= 1.0);
   /* The observables against the fields: a sum phi(g), the signed sums, the counts. The
    * energy's terms are all negative, so 1e-12 of it bounds the rounding. */
   CHECK_OK(asp_system_get_field(system, ASP_FIELD_GAP, gap, N * N));
@@ -99,13 +102,15 @@ int main(void) {
     sum += -work * exp(-(gap[i] > 0.0 ? gap[i] : 0.0) / range);
     negative += pressure[i] < 0.0;
     positive += pressure[i] > 0.0;
+    on_wall += gap[i] == 0.0;
     /* the wall pulls no harder than adhesion can */
     too_tensile += !(pressure[i] >= -work / range * (1 + 1e-12));
   }
   CHECK(too_tensile == 0);
   CHECK_NEAR(energy, pixel_area * sum, 1e-12 * fabs(energy));
   CHECK(energy < 0.0);
-  CHECK(fraction == (double)positive / (N * N));
+  CHECK(fraction == (double)on_wall / (N * N));
+  CHECK(compressive_fraction == (double)positive / (N * N));
   CHECK(attractive_fraction == (double)negative / (N * N));
 
   /* ---- work 0: the plain hard wall again; the state is kept (no longer an equilibrium) ---- */

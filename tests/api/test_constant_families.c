@@ -57,10 +57,12 @@ static const Constant constants[] = {
     C(ASP_INTERACTION_ENERGY, SCALAR),
     C(ASP_WORK_OF_ADHESION, SCALAR),
     C(ASP_ADHESION_RANGE, SCALAR),
+    C(ASP_COMPRESSIVE_FRACTION, SCALAR),
     C(ASP_FIELD_PRESSURE, FIELD),
     C(ASP_FIELD_GAP, FIELD),
     C(ASP_FIELD_DISPLACEMENT, FIELD),
     C(ASP_FIELD_TOPOGRAPHY, FIELD),
+    C(ASP_FIELD_CONTACT, FIELD),
     C(ASP_CONTROL_MEAN_PRESSURE, CONTROL),
     C(ASP_CONTROL_PENETRATION, CONTROL),
     C(ASP_CONTROL_MEAN_GAP, CONTROL),
@@ -76,6 +78,7 @@ static const Constant constants[] = {
     C(ASP_TERMINATION_CANCELLED, TERMINATION),
     C(ASP_TERMINATION_STALLED, TERMINATION),
     C(ASP_TERMINATION_BREAKDOWN, TERMINATION),
+    C(ASP_TERMINATION_SEPARATED, TERMINATION),
     C(ASP_DETREND_MEAN, DETREND),
     C(ASP_DETREND_PLANE, DETREND),
     C(ASP_DETREND_CURVATURE, DETREND),
@@ -105,8 +108,8 @@ static const int statuses[] = {ASP_OK,
 
 /* Values that belong to no family, inside and outside the families' ranges. */
 static const int strays[] = {INT_MIN, -701, -1, 0, 1, 2, 99, 100, 104, 199, 200,
-                             203, 300, 316, 399, 400, 405, 500, 504, 600, 608,
-                             700, 706, 800, 804, 900, 909, 1000, INT_MAX};
+                             203, 300, 317, 399, 400, 406, 500, 504, 600, 608,
+                             700, 707, 800, 804, 900, 909, 1000, INT_MAX};
 #define N_STRAYS ((int)(sizeof strays / sizeof strays[0]))
 
 #define NX 8

@@ -454,8 +454,8 @@ program test_api
               'the variable is the one set')
   call expect_status(asp_solver_set_option(lbfgsb, 'tolerance', tolerance), ASP_OK, &
                      'asp_solver_set_option(tolerance) for lbfgsb')
-  call expect_status(asp_solver_solve(lbfgsb, system, ASP_CONTROL_MEAN_PRESSURE, mean_pressure), &
-                     ASP_ERR_UNSUPPORTED, 'lbfgsb refuses mean-pressure control')
+  call expect_status(asp_solver_solve(lbfgsb, system, ASP_CONTROL_MEAN_GAP, mean_pressure), &
+                     ASP_ERR_UNSUPPORTED, 'lbfgsb refuses mean-gap control')
   call expect_status(asp_system_get(system, ASP_PENETRATION, penetration), ASP_OK, &
                      'asp_system_get(PENETRATION) for lbfgsb')
   call expect_status(asp_system_reset(system), ASP_OK, 'asp_system_reset before lbfgsb')

@@ -167,6 +167,16 @@ class GridAndSystem(unittest.TestCase):
         self.assertTrue(bugnicourt.supports(system, "penetration"))
         self.assertTrue(bugnicourt.solve(system, "penetration", 0.001).converged)
         self.assertLess(system.interaction_energy, 0.0)
+        # The contact map: 1 where the gap is 0, its mean the contact fraction; with adhesion
+        # it holds the compressive core and the tensile ring around it.
+        contact = system.contact
+        np.testing.assert_array_equal(contact, (system.gap == 0.0).astype(float))
+        self.assertEqual(contact.mean(), system.contact_fraction)
+        self.assertEqual(system.get_field(asperity.FIELD_CONTACT).mean(), contact.mean())
+        self.assertEqual(system.compressive_fraction,
+                         np.count_nonzero((contact == 1.0) & (system.pressure > 0.0))
+                         / contact.size)
+        self.assertLess(system.compressive_fraction, system.contact_fraction)
         system.set_lennard_jones(1e-4, 1e-3)
         self.assertEqual(system.work_of_adhesion, 0.0)
         self.assertTrue(asperity.Solver("fire").supports(system, "penetration"))
@@ -262,7 +272,7 @@ class SolverApi(unittest.TestCase):
         solver.solve(system, "penetration", 0.002)
         self.assertEqual(len(solver.history["error"]), 0)
         with self.assertRaises(asperity.UnsupportedError):
-            solver.solve(system, "mean_pressure", 1e-3)
+            solver.solve(system, "mean_gap", 1e-3)
         with self.assertRaises(asperity.InvalidArgumentError):
             solver.solve(system, "mean_force", 1e-3)
 

@@ -131,8 +131,13 @@ TEST(PolonskyKeer, IterationLimitIsAReportedOutcome) {
   EXPECT_EQ(report.iterations, 3);
   EXPECT_TRUE(std::isfinite(report.error));
   EXPECT_GT(report.error, 1e-12);
-  // The state left behind is consistent (gap computed from the last pressure).
+  // The state left behind is consistent (displacement computed from the last pressure), and
+  // its gap is the projection of the one that pressure makes: >= 0, and 0 where p > 0.
   expect_consistent_state(system);
+  for (std::size_t i = 0; i < h.size(); ++i) {
+    ASSERT_GE(system.state().gap[i], 0.0) << i;
+    if (system.state().pressure[i] > 0.0) ASSERT_EQ(system.state().gap[i], 0.0) << i;
+  }
 }
 
 TEST(PolonskyKeer, NoLoadAndNoPenetrationGiveNoPressure) {
@@ -143,6 +148,8 @@ TEST(PolonskyKeer, NoLoadAndNoPenetrationGiveNoPressure) {
   system.set_topography(h.data());
   auto report = asp_test::solve_pk(system, asp::Control::mean_pressure, 0.0);
   EXPECT_TRUE(report.converged());
+  // The body touches the highest points with zero pressure, but no pixel is in the active
+  // set (p > 0): whatever the sign of the rounding of their gap, none is in contact.
   EXPECT_EQ(system.contact_fraction(), 0.0);
   EXPECT_EQ(system.state().penetration, 0.0);
   for (double g : system.state().gap) EXPECT_GE(g, 0.0);

@@ -64,7 +64,9 @@ TEST(SoftAndHardWalls, ShortRangeSoftWallFollowsTheAdhesiveHardWallThroughALoadU
     ASSERT_TRUE(unconstrained.report().converged())
         << d << ": " << termination_name(unconstrained.report().termination) << " after "
         << unconstrained.report().iterations << ", error " << unconstrained.report().error;
-    on_hard.push_back({hard.mean_pressure(), hard.contact_fraction()});
+    // The soft wall's contact is where it repels (phi' < 0): the hard wall's compressive
+    // pixels, not its contact (g = 0), which holds the tensile ring too.
+    on_hard.push_back({hard.mean_pressure(), hard.compressive_fraction()});
     on_soft.push_back({soft.mean_pressure(), soft.contact_fraction()});
   }
 
@@ -85,7 +87,7 @@ TEST(SoftAndHardWalls, ShortRangeSoftWallFollowsTheAdhesiveHardWallThroughALoadU
   // The same branches. Near a jump the two models can be in different metastable states for
   // a step or two: a ripple jumps in one step later on the soft wall, or lets go a few steps
   // earlier (the soft wall's repulsion is not quite hard, its well 0.25 % shallower, and a
-  // solver without bounds may step over a low barrier). The states' contact fractions tell
+  // solver without bounds may step over a low barrier). The states' repulsive fractions tell
   // the branch (a ripple jumps by 0.5 % of the pixels; they differ by 0.1 % at most on one
   // branch); measured, 21 of 23 loading steps and 17 of 22 unloading steps find both on the
   // same branch, and at least 90 % and 75 % must. On the

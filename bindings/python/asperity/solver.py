@@ -25,8 +25,8 @@ class Report:
     """The report of a solve (what asp_solver_termination, ... return after it).
 
     termination is the reason's name ("converged", "iteration_limit", "cancelled",
-    "stalled", "breakdown"; the int code if unknown), termination_code its ASP_TERMINATION_*
-    value.
+    "stalled", "breakdown", "separated"; the int code if unknown), termination_code its
+    ASP_TERMINATION_* value.
     """
 
     termination: object

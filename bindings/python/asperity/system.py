@@ -33,8 +33,9 @@ class System(OwnedHandle):
 
     Fields (new NumPy arrays of shape (ny, nx) in C order, (nx,) in 1D, (local_ny, nx) on a
     grid distributed over MPI, whose arrays are the process's rows): :attr:`pressure`,
-    :attr:`gap`, :attr:`displacement`, :attr:`topography` (settable from an array), or
-    :meth:`get_field` with an optional ``out`` array.
+    :attr:`gap`, :attr:`displacement`, :attr:`contact` (the contact map),
+    :attr:`topography` (settable from an array), or :meth:`get_field` with an optional ``out``
+    array.
     Scalars: :meth:`get` by name ("mean_pressure", "contact_fraction", ...; see
     ``asperity.SCALARS``) or integer key, and a read-only property of each name
     (``system.mean_pressure``).
@@ -190,7 +191,8 @@ class System(OwnedHandle):
         return result
 
     def get_field(self, field, out=None):
-        """A field by name ("pressure", "gap", "displacement", "topography") or ASP_FIELD_*.
+        """A field by name ("pressure", "gap", "displacement", "topography", "contact") or
+        ASP_FIELD_*.
 
         Returns a new (ny, nx) C-order array, or fills ``out`` (an array of the layout rules,
         writeable) and returns it.
@@ -216,6 +218,12 @@ class System(OwnedHandle):
     def displacement(self):
         """The displacement field (positive into the body), a new (ny, nx) array."""
         return self.get_field("displacement")
+
+    @property
+    def contact(self):
+        """The contact map, 1.0 in contact and 0.0 elsewhere, a new (ny, nx) array; its mean
+        is contact_fraction."""
+        return self.get_field("contact")
 
     @property
     def topography(self):
