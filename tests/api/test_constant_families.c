@@ -26,8 +26,8 @@ enum {
 
 /* How a message names each family: the family's own word, as the header's list has it. */
 static const char *const family_word[FAMILIES] = {
-    "planning", "normalisation", "scalar",     "field",     "control",
-    "history column", "termination", "detrending", "report key"};
+    "planning",       "normalisation", "scalar",     "field",     "control",
+    "history column", "termination",   "detrending", "report key"};
 
 typedef struct {
   int value;
