@@ -968,7 +968,10 @@ ASP_EXPORT int asp_solver_get_history(const asp_solver *solver, int column, doub
  * one-sided derivatives of a step where a pixel comes into or leaves contact.
  *   plain hard wall: the pressure increment dp on the contact set C that moves the surface
  *     by 1 there, (K^-1 dp) = 1 on C and dp = 0 off C; stiffness = mean(dp). A state without
- *     contact has stiffness 0.
+ *     contact has stiffness 0; so has a touching state without pressure (zero load or
+ *     penetration) left by a pressure solver, which has no contact set there (ASP_CONTACT_
+ *     FRACTION 0), while a gap solver holds the touching pixels on the wall and gives the
+ *     stiffness of increasing delta from there.
  *   with a potential (exponential adhesion, a soft wall, Lennard-Jones, a user's potential
  *     with or without the wall, whose phi'' the callback is asked for once): the Hessian
  *     K + phi''(g) of the energy on the points off C, the displacement held at +1 on C.

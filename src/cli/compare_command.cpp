@@ -293,8 +293,7 @@ int compare_command(const std::vector<std::string> &arguments) {
                     column("mean_gap", s.unit), "repeats", column("cpu_seconds", "s"),
                     column("seconds_spread", "s")});
   LinePlot by_time, by_iteration;
-  // The scene by its file's name: a long path would crowd the title out.
-  const std::string scene_name = scene.source.substr(scene.source.find_last_of('/') + 1);
+  const std::string scene_name = file_name(scene.source);
   by_time.title = "error against time (" + scene_name + ")";
   by_time.x_label = "wall-clock time [s]";
   by_iteration.title = "error against iteration (" + scene_name + ")";

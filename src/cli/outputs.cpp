@@ -76,6 +76,15 @@ void OutputFile::commit() {
 
 const char *const pressure_unit = "E* unit";
 
+std::string file_name(const std::string &path) {
+  return path.substr(path.find_last_of('/') + 1);
+}
+
+std::string force_unit_of(const Surface &surface) {
+  if (surface.unit.empty()) return pressure_unit_of(surface);
+  return pressure_unit_of(surface) + " " + surface.unit + (surface.one_dimensional ? "" : "^2");
+}
+
 std::string pressure_unit_of(const Surface &surface) {
   return surface.pressure_unit.empty() ? pressure_unit : surface.pressure_unit;
 }

@@ -67,9 +67,15 @@ extern const char *const pressure_unit;
 // The unit of pressures of a surface's scene, for CSV columns and plot labels: its
 // substrate.pressure_unit, else pressure_unit.
 std::string pressure_unit_of(const Surface &surface);
+// The unit of a total force (1D: per unit length): the pressure's times the area's, "MPa um^2".
+std::string force_unit_of(const Surface &surface);
 // The same after a number in a report: "MPa", else "in the units of E*" (not "units of E*",
 // which reads as a multiple of E*).
 std::string pressure_unit_text(const Surface &surface);
+
+// The last component of a path (a scene's file name in plot titles, where a long path would
+// crowd the title out).
+std::string file_name(const std::string &path);
 
 // Reads one field of the system (ASP_FIELD_*).
 std::vector<double> read_field(const Contact &contact, int field);

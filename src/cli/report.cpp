@@ -82,7 +82,6 @@ void print_solve(std::FILE *out, const SolveReport &r, const Surface &s) {
 void write_summary(const std::string &path, const Scene &scene, const SolveReport &r,
                    const Surface &s) {
   CsvTable table({"quantity", "value", "unit"});
-  const std::string area_unit = s.unit.empty() ? "" : s.unit + (s.one_dimensional ? "" : "^2");
   table.add_row({"algorithm", r.algorithm, ""});
   table.add_row({"termination", termination_name(r.termination), ""});
   table.add_row({"iterations", cell(r.iterations), ""});
@@ -96,8 +95,7 @@ void write_summary(const std::string &path, const Scene &scene, const SolveRepor
   table.add_row({"mean_pressure", cell(r.mean_pressure), pressure_unit_of(s)});
   table.add_row({"penetration", cell(r.penetration), s.unit});
   table.add_row({"mean_gap", cell(r.mean_gap), s.unit});
-  table.add_row({"total_force", cell(r.total_force),
-                 pressure_unit_of(s) + (area_unit.empty() ? "" : " " + area_unit)});
+  table.add_row({"total_force", cell(r.total_force), force_unit_of(s)});
   table.add_row({"contact_modulus", cell(scene.substrate.contact_modulus), pressure_unit_of(s)});
   table.write(path);
 }

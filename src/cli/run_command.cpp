@@ -102,8 +102,7 @@ int run_command(const std::vector<std::string> &arguments) {
   if (scene.output.plots) {
     const Surface &s = contact.surface;
     const std::string length = s.unit.empty() ? "length" : "length [" + s.unit + "]";
-    // The scene by its file's name: a long path would crowd the title out.
-    const std::string scene_name = scene.source.substr(scene.source.find_last_of('/') + 1);
+    const std::string scene_name = file_name(scene.source);
     auto draw = [&](const std::string &name, const std::vector<double> &values,
                     const std::string &label, Colours colours = Colours::sequential) {
       const std::string png = dir + "/" + name + ".png";

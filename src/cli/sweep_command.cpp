@@ -107,14 +107,15 @@ int run_sweep(Session &session) {
               "contact", "iterations", "time", "termination");
   std::fflush(stdout);
 
-  const std::string control_column_unit = control == ASP_CONTROL_MEAN_PRESSURE ? pressure_unit : s.unit;
+  const std::string pressure = pressure_unit_of(s);
+  const std::string control_column_unit =
+      control == ASP_CONTROL_MEAN_PRESSURE ? pressure : s.unit;
   CsvTable table({"step", "phase", column("target_" + scene.control.quantity, control_column_unit),
-                  column("mean_pressure", pressure_unit), column("penetration", s.unit),
+                  column("mean_pressure", pressure), column("penetration", s.unit),
                   column("mean_gap", s.unit), "contact_fraction",
-                  column("total_force", pressure_unit), "iterations", column("seconds", "s"),
+                  column("total_force", force_unit_of(s)), "iterations", column("seconds", "s"),
                   "error", "termination",
-                  column("stiffness", s.unit.empty() ? std::string(pressure_unit) + "/length"
-                                                     : std::string(pressure_unit) + "/" + s.unit)});
+                  column("stiffness", pressure + "/" + (s.unit.empty() ? "length" : s.unit))});
   Series up{"loading", {}, {}}, down{"unloading", {}, {}};
   InterruptGuard interrupts;
   ProgressLine progress(stderr);
@@ -234,9 +235,9 @@ int run_sweep(Session &session) {
   std::string files = "sweep.csv";
   if (scene.output.plots) {
     LinePlot plot;
-    plot.title = "force against penetration (" + scene.source + ")";
+    plot.title = "force against penetration (" + file_name(scene.source) + ")";
     plot.x_label = "penetration" + length;
-    plot.y_label = "mean pressure [E* unit]";
+    plot.y_label = "mean pressure [" + pressure + "]";
     plot.points = true;
     plot.series.push_back(up);
     if (!down.x.empty()) plot.series.push_back(down);

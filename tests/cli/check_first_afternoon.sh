@@ -225,6 +225,15 @@ expect "... and the control" has "^control .*\(MPa\)$" "$out"
 expect "... and the summary" has "^mean_pressure,.*,MPa$" run-mpa/summary.csv
 bad "substrate.pressure_unit" "is empty" -- run "$small" --set substrate.pressure_unit='""'
 
+run sweep "$small" --set substrate.pressure_unit=MPa --quantity penetration --from 0 \
+  --to 0.002 --steps 1 --no-unload --output sweep-mpa
+expect "sweep with a pressure unit exits 0 (stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
+expect "sweep.csv's pressures carry the scene's unit" \
+  has "mean_pressure \[MPa\],.*,stiffness \[MPa/" sweep-mpa/sweep.csv
+expect "sweep's picture: the unit on its axis, the file's name in its title" bash -c \
+  'grep -q "^set ylabel .mean pressure \[MPa\]" "$1" && grep -q "^set title .*(small.toml)" "$1"' \
+  _ "$(script_of sweep-mpa sweep.png)"
+
 time_script=$(script_of compare-adhesive error_vs_time.png)
 expect "compare's title names the scene's file, not its path" \
   has "^set title 'error against time \(adhesive.toml\)'" "$time_script"
