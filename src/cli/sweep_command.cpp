@@ -42,15 +42,61 @@ const char *const sweep_help =
     "between the most tensile stable load and that one is then halved 4 times (phase\n"
     "'pull-off', each trial started again from the stable branch), and the pull-off\n"
     "force is reported as the most tensile load with a stable state.\n"
+    "\n"
+    "Jumps: a solve under mean-pressure control returns only stable states, so that where\n"
+    "the branch the previous step was on ends (snap-in, partial detachment) it lands on\n"
+    "another. A converged step that follows a converged one is said to have jumped when\n"
+    "both have a stiffness (> 0) and the secant (change of mean pressure over change of\n"
+    "penetration) is below half the smaller of the two: a line 'note: the contact jumped\n"
+    "...' follows the step's, and sweep.csv's column 'jump' says 'yes' on that step.\n"
     "\n";
 
-// d(mean pressure)/d(penetration) of a step's state (asp_solver_normal_stiffness), or an empty
-// cell where it has none: the solve did not converge, or the state is not a stable
-// equilibrium.
-std::string stiffness_cell(asp_solver *solver, asp_system *system, bool converged) {
+// d(mean pressure)/d(penetration) of a step's state (asp_solver_normal_stiffness), or NaN
+// where it has none: the solve did not converge, or the state is not a stable equilibrium.
+double stiffness_of(asp_solver *solver, asp_system *system, bool converged) {
   double stiffness = 0.0;
-  if (!converged || asp_solver_normal_stiffness(solver, system, &stiffness) != ASP_OK) return "";
-  return cell(stiffness);
+  if (!converged || asp_solver_normal_stiffness(solver, system, &stiffness) != ASP_OK)
+    return std::nan("");
+  return stiffness;
+}
+
+// A converged step of a load-controlled sweep, as the jump test below compares it with the
+// next one.
+struct BranchPoint {
+  double target = 0.0;  // the load asked for
+  double mean_pressure = 0.0;
+  double penetration = 0.0;
+  double stiffness = 0.0;  // the tangent d(mean pressure)/d(penetration); NaN where none
+};
+
+// The secant below which two successive load-controlled steps are taken to lie on different
+// branches, as a fraction of the smaller of their tangents. On one continuous stable branch the
+// secant (p1 - p0)/(d1 - d0) is the tangent at some point of the step (mean value theorem),
+// and so lies between the two end tangents where the tangent varies monotonically along the
+// step. On a grid it does not quite: the contact grows by whole pixels and the tangents of
+// one branch scatter about a smooth curve, so that the secant of a step of the adhesive
+// sphere's sweep (tests/cli/scenes/adhesive_sphere.toml) falls to 0.86 of the smaller tangent,
+// and one of the wavy surface's partial contact (wavy_snap_in.toml) to 0.90. Half the smaller
+// tangent leaves room for that, while a jump, which moves the penetration at almost constant
+// load, puts the secant far below both tangents (0.29 of the smaller at the wavy surface's
+// snap-in). The price: a step whose penetration moves by less than 2 |dp| / min(k) is never
+// called a jump, so a small jump, or one from a branch whose tangent has already fallen
+// towards zero near its end, can be missed; finer steps near it make its secant smaller.
+constexpr double jump_secant_fraction = 0.5;
+
+// Whether the step from `before` to `after` jumped between stable branches, and its secant.
+// Both tangents must exist and be positive (stable states); a penetration that moved against
+// the load (a secant <= 0) is a jump too. Steps at one load, or with no move in penetration,
+// are not compared: a repeated load leaves a converged state where it is, and the secant
+// between two solves of it is round-off.
+bool jumped(const BranchPoint &before, const BranchPoint &after, double *secant) {
+  const double dp = after.mean_pressure - before.mean_pressure;
+  const double dd = after.penetration - before.penetration;
+  if (!(before.stiffness > 0.0) || !(after.stiffness > 0.0) || after.target == before.target ||
+      dp == 0.0 || dd == 0.0)
+    return false;
+  *secant = dp / dd;
+  return *secant < jump_secant_fraction * std::min(before.stiffness, after.stiffness);
 }
 
 }  // namespace
@@ -115,15 +161,22 @@ int run_sweep(Session &session) {
                   column("mean_gap", s.unit), "contact_fraction",
                   column("total_force", force_unit_of(s)), "iterations", column("seconds", "s"),
                   "error", "termination",
-                  column("stiffness", pressure + "/" + (s.unit.empty() ? "length" : s.unit))});
+                  column("stiffness", pressure + "/" + (s.unit.empty() ? "length" : s.unit)),
+                  "jump"});
   Series up{"loading", {}, {}}, down{"unloading", {}, {}};
   InterruptGuard interrupts;
   ProgressLine progress(stderr);
   bool all_converged = true, cancelled = false;
   size_t step = 0;
   PullOff pull_off;
+  // The step before, where it converged under load control and is to be compared with the
+  // next: a load-controlled solve returns only stable states, and where the branch it was on
+  // ends it follows the jump to another, which the secant between the two steps shows.
+  BranchPoint previous;
+  bool has_previous = false;
   // One step of the sweep: solved, printed, tabled. A step of the pull-off search that
-  // separates is what the search looks for, not a failure.
+  // separates is what the search looks for, not a failure; the search's trials each start
+  // again from the stable branch, and are not compared with the step before.
   const auto solve_step = [&](double value, const char *phase, Series *series) {
     progress.set_label("step " + std::to_string(step));
     const SolveReport r = solve(session.solver.get(), scene.solver.algorithm, contact, control,
@@ -134,12 +187,28 @@ int run_sweep(Session &session) {
     std::printf("%5zu %-9s %14.6g %14.6g %14.6g %14.6f %10lld %6.2f  %s\n", step, phase,
                 r.penetration, r.mean_pressure, r.mean_gap, r.contact_fraction,
                 static_cast<long long>(r.iterations), r.seconds, termination_name(r.termination));
+    const double stiffness =
+        stiffness_of(session.solver.get(), contact.system.get(), r.converged());
+    const bool compared = control == ASP_CONTROL_MEAN_PRESSURE && r.converged() &&
+                          std::string(phase) != "pull-off";
+    const BranchPoint here{value, r.mean_pressure, r.penetration, stiffness};
+    double secant = 0.0;
+    const bool jump = compared && has_previous && jumped(previous, here, &secant);
+    if (jump)
+      std::printf("note: the contact jumped to another stable branch between steps %zu and %zu "
+                  "(penetration %.6g -> %.6g at mean pressure %.6g -> %.6g; secant %.6g, "
+                  "tangents %.6g, %.6g)\n",
+                  step - 1, step, previous.penetration, here.penetration,
+                  previous.mean_pressure, here.mean_pressure, secant, previous.stiffness,
+                  here.stiffness);
+    previous = here;
+    has_previous = compared;
     std::fflush(stdout);
     table.add_row({cell(static_cast<int64_t>(step)), phase, cell(value), cell(r.mean_pressure),
                    cell(r.penetration), cell(r.mean_gap), cell(r.contact_fraction),
                    cell(r.total_force), cell(r.iterations), cell(r.seconds), cell(r.error),
                    termination_name(r.termination),
-                   stiffness_cell(session.solver.get(), contact.system.get(), r.converged())});
+                   std::isnan(stiffness) ? std::string() : cell(stiffness), jump ? "yes" : ""});
     if (series != nullptr && !separated) {
       series->x.push_back(r.penetration);
       series->y.push_back(r.mean_pressure);

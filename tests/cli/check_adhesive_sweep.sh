@@ -8,6 +8,10 @@
 # pull-off must lie between JKR's -1.5 and DMT's -2 pi w R (at Tabor 2, Maugis-Dugdale's is
 # about -1.55), and "bugnicourt" and "lbfgsb" must find the same bracket. A sweep by load
 # without adhesion searches no pull-off.
+# The jump test of a load-controlled sweep: the sphere's sweep stays on one JKR branch and
+# reports no jump; a wavy surface (scenes/wavy_snap_in.toml) snaps into full contact between
+# two loading steps, and the note and the sweep.csv row marked `jump` must be that step and no
+# other; under penetration control, where the load jumps instead, nothing is reported.
 # Usage: check_adhesive_sweep.sh PATH_TO_ASPERITY SOURCE_DIRECTORY WORK_DIRECTORY
 set -u
 cli=$1 source=$2 work=$3
@@ -42,6 +46,9 @@ for algorithm in bugnicourt lbfgsb; do
     [ "$(awk -F, '$2 == "pull-off" && ($12 == "converged" || $12 == "separated")' "$csv" | wc -l)" -eq 4 ]
   expect "$algorithm: no separated state keeps contact" \
     [ "$(awk -F, '$12 == "separated" && $7 != 0' "$csv" | wc -l)" -eq 0 ]
+  # One JKR branch from the first load to the pull-off: no step jumped.
+  expect "$algorithm: the sphere's sweep reports no jump ($(grep '^note:' "$algorithm.out"))" \
+    [ "$(grep -c '^note: the contact jumped' "$algorithm.out"),$(awk -F, 'NR > 1 && $14 != ""' "$csv" | wc -l)" = "0,0" ]
   read -r stable separating <<< "$(pull_off_of "$algorithm.out")"
   expect "$algorithm: a pull-off line ($(grep '^pull-off' "$algorithm.out"))" [ -n "${separating:-}" ]
   # The bracket: a sixteenth of the unloading step of 0.002 (1.25e-4), the stable end above.
@@ -53,6 +60,53 @@ for algorithm in bugnicourt lbfgsb; do
   eval "bracket_$algorithm='${stable:-} ${separating:-}'"
 done
 expect "bugnicourt and lbfgsb find the same bracket" [ "$bracket_bugnicourt" = "$bracket_lbfgsb" ]
+
+# A wavy surface under increasing load: partial contact up to a load where its branch ends,
+# then full contact. The step that jumped is the loading step with the largest move in
+# penetration, the first in full contact; its note gives the two steps' figures as sweep.csv
+# has them. Unloading keeps full contact until the surfaces separate: one jump in all.
+wavy=$source/tests/cli/scenes/wavy_snap_in.toml
+for algorithm in bugnicourt lbfgsb; do
+  out=wavy-$algorithm
+  "$cli" sweep "$wavy" --algorithm "$algorithm" --planning estimate --no-plots \
+    --output "$out" > "$out.out" 2> "$out.err" < /dev/null
+  rc=$?
+  expect "$algorithm: the wavy sweep exits 0 (stderr: $(cat "$out.err"))" [ "$rc" -eq 0 ]
+  csv=$out/sweep.csv
+  # The loading step whose penetration moved most from the step before.
+  biggest=$(awk -F, 'NR > 2 && $2 == "loading" && $5 - d > most { most = $5 - d; k = $1 }
+                     NR > 1 { d = $5 } END { print k }' "$csv")
+  yes_rows=$(awk -F, 'NR > 1 && $14 == "yes" { printf "%s%s", sep, $1; sep = " " }' "$csv")
+  expect "$algorithm: one row marked jump (${yes_rows:-none}), the largest move in penetration (${biggest:-none})" \
+    [ "${yes_rows:-none}" = "${biggest:-missing}" ]
+  expect "$algorithm: the jump is into full contact from partial contact" \
+    awk -F, -v k="${biggest:-0}" '$1 == k - 1 { before = $7 } $1 == k { after = $7 }
+                                  END { exit !(before > 0.3 && before < 0.9 && after == 1) }' "$csv"
+  expect "$algorithm: the only other column value is empty" \
+    [ "$(awk -F, 'NR > 1 && $14 != "" && $14 != "yes"' "$csv" | wc -l)" -eq 0 ]
+  # The note, after the step's line, with that step's and the one before's figures.
+  expected=$(awk -F, -v k="${biggest:-0}" '$1 == k - 1 { d1 = $5; p1 = $4; k1 = $13 }
+      $1 == k { printf "note: the contact jumped to another stable branch between steps %d and %d (penetration %.6g -> %.6g at mean pressure %.6g -> %.6g; secant %.6g, tangents %.6g, %.6g)\n",
+                k - 1, k, d1, $5, p1, $4, ($4 - p1) / ($5 - d1), k1, $13 }' "$csv")
+  expect "$algorithm: one note, after step ${biggest:-?}'s line ($(grep '^note:' "$out.out"))" \
+    [ "$(grep -c '^note: the contact jumped' "$out.out")" -eq 1 ]
+  expect "$algorithm: the note says what sweep.csv has ($expected)" \
+    [ "$(grep -A1 "^ *${biggest:-x} loading " "$out.out" | sed -n 2p)" = "$expected" ]
+done
+
+# Under penetration control the same snap-in shows as a drop of the load at one penetration,
+# and the steps are not compared: across the snap-in from 0.0095 to 0.0105 both states are
+# stable with tangents 0.64 and pi, and the secant is negative.
+"$cli" sweep "$wavy" --quantity penetration --from 0.0045 --to 0.0105 --steps 6 --no-unload \
+  --planning estimate --no-plots --output wavy-penetration > wavy-penetration.out \
+  2> wavy-penetration.err < /dev/null
+rc=$?
+expect "the wavy sweep by penetration exits 0 (stderr: $(cat wavy-penetration.err))" [ "$rc" -eq 0 ]
+csv=wavy-penetration/sweep.csv
+expect "by penetration the load drops at the snap-in (its last step)" \
+  awk -F, 'NR > 1 { if (p != "" && $4 < p) drops++; p = $4 } END { exit !(drops == 1 && $7 == 1) }' "$csv"
+expect "by penetration no jump is reported" \
+  [ "$(grep -c '^note: the contact jumped' wavy-penetration.out),$(awk -F, 'NR > 1 && $14 != ""' "$csv" | wc -l)" = "0,0" ]
 
 # Without adhesion: a sweep by load, no pull-off search.
 "$cli" sweep "$source/tests/cli/scenes/small.toml" --quantity mean_pressure --from 0.005 \

@@ -296,7 +296,7 @@ expect "compare without --solvers lists the others as skipped" has "^skipped +lb
 run sweep "$scenes/hysteresis.toml" --output swept
 expect "the Table 5 sweep exits 0 (stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
 expect "sweep.csv has its header" [ "$(header_of swept/sweep.csv)" = \
-  "step,phase,target_penetration,mean_pressure [E* unit],penetration,mean_gap,contact_fraction,total_force [E* unit],iterations,seconds [s],error,termination,stiffness [E* unit/length]" ]
+  "step,phase,target_penetration,mean_pressure [E* unit],penetration,mean_gap,contact_fraction,total_force [E* unit],iterations,seconds [s],error,termination,stiffness [E* unit/length],jump" ]
 expect "the sweep loads 23 steps and unloads 22" [ "$(grep -c ',loading,' swept/sweep.csv),$(grep -c ',unloading,' swept/sweep.csv)" = "23,22" ]
 # Hysteresis: at some penetration the unloading force lies clearly below the loading force.
 expect "unloading lies below loading somewhere (hysteresis)" awk -F, '
