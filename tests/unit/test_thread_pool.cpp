@@ -19,6 +19,7 @@
 #include "core/loops.hpp"
 #include "core/thread_pool.hpp"
 #include "core/threads.hpp"
+#include "sanitizer.hpp"
 
 namespace {
 
@@ -85,14 +86,6 @@ TEST(ThreadPool, LoopsFromSeveralThreadsAtOnceAndFromInsideAJobAllRun) {
 // Under AddressSanitizer the forked child of this case hung (not diagnosed further: fork()
 // from a threaded process is where its runtime's locks and its leak check at exit are
 // weakest), so it runs in the plain builds only.
-#if defined(__SANITIZE_ADDRESS__)
-#define ASPERITY_TEST_UNDER_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define ASPERITY_TEST_UNDER_ASAN 1
-#endif
-#endif
-
 TEST(ThreadPool, AChildForkedAfterThePoolStartedRunsItsLoopsAndExits) {
 #ifdef ASPERITY_TEST_UNDER_ASAN
   GTEST_SKIP() << "fork() from a threaded process under AddressSanitizer";
