@@ -371,11 +371,11 @@ bool PrimalFormulation::finish() {
     return (heights_[i] - top) / n;
   });
   // Under load control the penetration is the one the stored state says: the mean of
-  // u - (h - max h) - g over the grid, u = K^-1 p the displacement of the stored pressure (one
-  // FFT pair; on a periodic substrate this is pbar/K~(0) - mean g - mean(h - max h), as under
-  // mean-gap control, and on a free one the padded operator's).
+  // u - (h - max h) - g over the grid, u = K^-1 p the displacement of the stored pressure. On a
+  // periodic substrate mean u = pbar/K~(0), so that it is the mean-gap formula below; on a free
+  // one it takes the padded operator (one FFT pair).
   double load_penetration = 0.0;
-  if (control_ == Control::mean_pressure) {
+  if (control_ == Control::mean_pressure && !substrate_.has_k0()) {
     Field displacement = grid_.make_field();
     double *u = displacement.data();
     substrate_.forward(p, spectrum_.data());
@@ -389,8 +389,9 @@ bool PrimalFormulation::finish() {
       return (u[i] - (heights_[i] - top) - g[i]) / n;
     });
   }
-  const double delta = control_ == Control::mean_gap
-                           ? mean_pressure / substrate_.k0() - sums[0] - mean_height
+  const bool from_mean_pressure =
+      control_ == Control::mean_gap || (control_ == Control::mean_pressure && substrate_.has_k0());
+  const double delta = from_mean_pressure ? mean_pressure / substrate_.k0() - sums[0] - mean_height
                        : control_ == Control::mean_pressure ? load_penetration
                                                             : penetration_ * length;
   state_.penetration = delta;
