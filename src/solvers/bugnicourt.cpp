@@ -9,9 +9,9 @@
 #include "core/error.hpp"
 #include "core/loops.hpp"
 #include "solvers/bugnicourt_passes.hpp"
-#include "solvers/dual_formulation.hpp"
-#include "solvers/primal_formulation.hpp"
-#include "solvers/solver.hpp"
+#include "formulations/dual_formulation.hpp"
+#include "formulations/primal_formulation.hpp"
+#include "solvers/monitor.hpp"
 
 namespace asp {
 namespace {

@@ -7,7 +7,7 @@
 // exponential adhesion (whose objective is not quadratic).
 #pragma once
 
-#include "solvers/registry.hpp"
+#include "solvers/algorithm.hpp"
 
 namespace asp {
 

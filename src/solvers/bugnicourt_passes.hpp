@@ -27,9 +27,9 @@
 
 #include "core/error.hpp"
 #include "core/loops.hpp"
-#include "solvers/bound_residual.hpp"
-#include "solvers/formulation.hpp"
-#include "solvers/local_term.hpp"
+#include "formulations/bound_residual.hpp"
+#include "formulations/formulation.hpp"
+#include "formulations/local_term.hpp"
 
 namespace asp {
 

@@ -6,7 +6,7 @@
 
 #include "core/error.hpp"
 #include "core/loops.hpp"
-#include "solvers/solver.hpp"
+#include "solvers/monitor.hpp"
 
 namespace asp {
 namespace {

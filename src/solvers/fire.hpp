@@ -14,7 +14,7 @@
 // Alg. 7).
 #pragma once
 
-#include "solvers/formulation.hpp"
+#include "formulations/formulation.hpp"
 #include "solvers/monitor.hpp"
 
 namespace asp {

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "core/loops.hpp"
-#include "solvers/solver.hpp"
+#include "solvers/monitor.hpp"
 
 namespace asp {
 namespace {

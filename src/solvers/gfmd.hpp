@@ -16,7 +16,7 @@
 // halved. docs/algorithms.md has the measurements behind both.
 #pragma once
 
-#include "solvers/formulation.hpp"
+#include "formulations/formulation.hpp"
 #include "solvers/monitor.hpp"
 
 namespace asp {

@@ -9,7 +9,7 @@
 #include "core/error.hpp"
 #include "core/loops.hpp"
 #include "solvers/line_search.hpp"
-#include "solvers/solver.hpp"
+#include "solvers/monitor.hpp"
 
 namespace asp {
 namespace {

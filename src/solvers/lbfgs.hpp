@@ -8,7 +8,7 @@
 // the displacement (`lbfgs`) or the preconditioned Fourier variable (`lbfgs_fourier`).
 #pragma once
 
-#include "solvers/formulation.hpp"
+#include "formulations/formulation.hpp"
 #include "solvers/monitor.hpp"
 
 namespace asp {

@@ -9,10 +9,10 @@
 
 #include "core/error.hpp"
 #include "core/loops.hpp"
-#include "solvers/dual_formulation.hpp"
+#include "formulations/dual_formulation.hpp"
 #include "solvers/line_search.hpp"
-#include "solvers/primal_formulation.hpp"
-#include "solvers/solver.hpp"
+#include "formulations/primal_formulation.hpp"
+#include "solvers/monitor.hpp"
 
 namespace asp {
 namespace {

@@ -15,9 +15,9 @@
 #include "core/aligned_field.hpp"
 #include "core/reductions.hpp"
 #include "solvers/compact_bfgs.hpp"
-#include "solvers/formulation.hpp"
+#include "formulations/formulation.hpp"
 #include "solvers/monitor.hpp"
-#include "solvers/registry.hpp"
+#include "solvers/algorithm.hpp"
 
 namespace asp {
 

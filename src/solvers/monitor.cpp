@@ -97,4 +97,29 @@ bool Monitor::should_stop(std::int64_t iteration, const IterationState &state) {
   return false;
 }
 
+IterationState observe(const Formulation &f, const double *x, const double *g, double value,
+                       const Monitor &monitor) {
+  return observe(f, x, g, f.error(x, g), value, monitor);
+}
+
+IterationState observe(const Formulation &f, const double *x, const double *g, double error,
+                       double value, const Monitor &monitor) {
+  IterationState state;
+  state.error = error;
+  state.objective =
+      monitor.wants_objective() ? f.reported_objective(x, g, value) * f.energy_unit() : 0.0;
+  state.contact_fraction = monitor.wants_objective() ? f.contact_fraction(x, g) : 0.0;
+  state.evaluations = f.counters().evaluations;
+  state.transforms = f.counters().transforms;
+  state.separated = f.separates(x);
+  return state;
+}
+
+void conclude(Formulation &formulation, System &system, Monitor &monitor) {
+  if (monitor.termination() == Termination::breakdown || !formulation.finish()) {
+    system.reset_state();
+    monitor.declare_breakdown();
+  }
+}
+
 }  // namespace asp

@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "core/reductions.hpp"
+#include "formulations/formulation.hpp"
+#include "physics/system.hpp"
 
 namespace asp {
 
@@ -105,5 +107,19 @@ class Monitor {
   std::int64_t stall_since_ = 0;  // iteration at which stall_reference_ was set
   History history_;
 };
+
+// The state the monitor sees at x with the gradient g (before any projection) and the
+// objective's value there: the error, the counters, and the reported objective and contact
+// fraction when the history is recorded.
+IterationState observe(const Formulation &f, const double *x, const double *g, double value,
+                       const Monitor &monitor);
+// The same with the error already known (a solver that gathers it in a pass of its own).
+IterationState observe(const Formulation &f, const double *x, const double *g, double error,
+                       double value, const Monitor &monitor);
+
+// The end of every algorithm's run: writes the formulation's iterate back into the system, or,
+// after a breakdown (seen by the monitor or in the physical values), resets the system to zero
+// pressure and records the breakdown.
+void conclude(Formulation &formulation, System &system, Monitor &monitor);
 
 }  // namespace asp

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "solvers/polonsky_keer.hpp"
 
-#include "solvers/dual_formulation.hpp"
-#include "solvers/solver.hpp"
+#include "formulations/dual_formulation.hpp"
+#include "solvers/monitor.hpp"
 
 namespace asp {
 namespace {

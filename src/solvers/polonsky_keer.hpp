@@ -3,7 +3,7 @@
 // Alg. 3) for the non-adhesive hard-wall contact, on the pressure (the dual formulation).
 #pragma once
 
-#include "solvers/registry.hpp"
+#include "solvers/algorithm.hpp"
 
 namespace asp {
 

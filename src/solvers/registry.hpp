@@ -5,72 +5,12 @@
 // touches the system.
 #pragma once
 
-#include <map>
 #include <string>
 #include <vector>
 
-#include "physics/system.hpp"
-#include "solvers/control.hpp"
-#include "solvers/monitor.hpp"
+#include "solvers/algorithm.hpp"
 
 namespace asp {
-
-enum class OptionType { real, integer, choice };
-
-struct OptionSpec {
-  std::string name;
-  OptionType type;
-  double default_value = 0.0;  // real and integer options
-  double minimum = 0.0;
-  double maximum = 0.0;
-  bool minimum_excluded = false;              // (minimum, maximum] instead of [minimum, maximum]
-  std::vector<std::string> choices;           // choice options; the first is the default
-  std::string meaning;
-};
-
-// Option values by name: numbers for real and integer options, texts for choices.
-struct OptionValues {
-  std::map<std::string, double> numbers;
-  std::map<std::string, std::string> texts;
-  double number(const std::string &name) const { return numbers.at(name); }
-  const std::string &text(const std::string &name) const { return texts.at(name); }
-};
-
-// What an algorithm serves with given option values, and which values those are (for the
-// refusal's message, e.g. "variable = gap").
-struct Offer {
-  std::vector<Control> controls;
-  std::vector<SubstrateKind> substrates;
-  std::vector<InteractionKind> interactions;
-  std::string condition;
-  // The controls offered on a free substrate when fewer than `controls` (empty: all of
-  // them), and why the others are not.
-  std::vector<Control> free_controls;
-  std::string free_reason;
-  // The interactions taken under mean-pressure control when fewer than `interactions`
-  // (empty: all of them), and why the others are not.
-  std::vector<InteractionKind> load_interactions;
-  std::string load_reason;
-};
-
-struct AlgorithmSpec {
-  std::string name;
-  std::string summary;
-  // What it serves with some option values (for describe()).
-  std::vector<Control> controls;
-  std::vector<SubstrateKind> substrates;
-  std::vector<InteractionKind> interactions;
-  // As in Offer: the controls on a free substrate when fewer, and why.
-  std::vector<Control> free_controls;
-  std::string free_reason;
-  // What it serves with these option values, when that depends on them (null: the lists
-  // above, whatever the options).
-  Offer (*offer_for)(const OptionValues &options) = nullptr;
-  std::vector<OptionSpec> options;  // every option, the common ones first
-  // Runs the algorithm from the system's state and leaves its result there (see conclude()).
-  void (*run)(System &system, Control control, double value, const OptionValues &options,
-              Monitor &monitor);
-};
 
 // Every algorithm of this build, in a fixed order.
 const std::vector<AlgorithmSpec> &algorithms();

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "physics/system.hpp"
-#include "solvers/control.hpp"
-#include "solvers/formulation.hpp"
+#include "formulations/control.hpp"
+#include "formulations/formulation.hpp"
 #include "solvers/monitor.hpp"
 #include "solvers/registry.hpp"
 
@@ -78,19 +78,5 @@ class Solver {
   SolveReport report_;
   History history_;
 };
-
-// The state the monitor sees at x with the gradient g (before any projection) and the
-// objective's value there: the error, the counters, and the reported objective and contact
-// fraction when the history is recorded.
-IterationState observe(const Formulation &f, const double *x, const double *g, double value,
-                       const Monitor &monitor);
-// The same with the error already known (a solver that gathers it in a pass of its own).
-IterationState observe(const Formulation &f, const double *x, const double *g, double error,
-                       double value, const Monitor &monitor);
-
-// The end of every algorithm's run: writes the formulation's iterate back into the system, or,
-// after a breakdown (seen by the monitor or in the physical values), resets the system to zero
-// pressure and records the breakdown.
-void conclude(Formulation &formulation, System &system, Monitor &monitor);
 
 }  // namespace asp

@@ -3,12 +3,12 @@
 
 #include <utility>
 
-#include "solvers/displacement_formulation.hpp"
+#include "formulations/displacement_formulation.hpp"
 #include "solvers/fire.hpp"
-#include "solvers/fourier_formulation.hpp"
+#include "formulations/fourier_formulation.hpp"
 #include "solvers/gfmd.hpp"
 #include "solvers/lbfgs.hpp"
-#include "solvers/solver.hpp"
+#include "solvers/monitor.hpp"
 
 namespace asp {
 namespace {

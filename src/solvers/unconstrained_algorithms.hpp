@@ -8,7 +8,7 @@
 //   gfmd               damped dynamics on the Fourier variable (mass-weighted GFMD)
 #pragma once
 
-#include "solvers/registry.hpp"
+#include "solvers/algorithm.hpp"
 
 namespace asp {
 

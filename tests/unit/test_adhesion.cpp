@@ -16,7 +16,7 @@
 #include "core/random.hpp"
 #include "physics/topography.hpp"
 #include "scene.hpp"
-#include "solvers/primal_formulation.hpp"
+#include "formulations/primal_formulation.hpp"
 
 namespace {
 

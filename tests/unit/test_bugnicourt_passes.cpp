@@ -18,8 +18,8 @@
 #include "core/random.hpp"
 #include "scene.hpp"
 #include "solvers/bugnicourt_passes.hpp"
-#include "solvers/dual_formulation.hpp"
-#include "solvers/primal_formulation.hpp"
+#include "formulations/dual_formulation.hpp"
+#include "formulations/primal_formulation.hpp"
 
 namespace {
 

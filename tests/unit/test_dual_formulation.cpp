@@ -33,7 +33,7 @@
 #include "core/random.hpp"
 #include "physics/topography.hpp"
 #include "scene.hpp"
-#include "solvers/dual_formulation.hpp"
+#include "formulations/dual_formulation.hpp"
 
 namespace {
 using asp::Control;

@@ -16,9 +16,9 @@
 #include "core/reductions.hpp"
 #include "physics/topography.hpp"
 #include "solvers/compact_bfgs.hpp"
-#include "solvers/dual_formulation.hpp"
+#include "formulations/dual_formulation.hpp"
 #include "solvers/lbfgsb.hpp"
-#include "solvers/primal_formulation.hpp"
+#include "formulations/primal_formulation.hpp"
 #include "scene.hpp"
 
 namespace {

@@ -10,7 +10,7 @@
 
 #include "core/reductions.hpp"
 #include "scene.hpp"
-#include "solvers/bound_residual.hpp"
+#include "formulations/bound_residual.hpp"
 
 namespace {
 

@@ -17,7 +17,7 @@
 #include "physics/potential.hpp"
 #include "physics/system.hpp"
 #include "scene.hpp"
-#include "solvers/scene_units.hpp"
+#include "formulations/scene_units.hpp"
 
 namespace {
 

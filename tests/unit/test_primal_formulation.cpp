@@ -13,7 +13,7 @@
 
 #include "core/random.hpp"
 #include "scene.hpp"
-#include "solvers/primal_formulation.hpp"
+#include "formulations/primal_formulation.hpp"
 
 namespace {
 

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "scene.hpp"
-#include "solvers/displacement_formulation.hpp"
-#include "solvers/fourier_formulation.hpp"
+#include "formulations/displacement_formulation.hpp"
+#include "formulations/fourier_formulation.hpp"
 
 using namespace asp;
 using asp_test::grid_1d;

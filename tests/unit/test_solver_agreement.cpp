@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "scene.hpp"
-#include "solvers/primal_formulation.hpp"
+#include "formulations/primal_formulation.hpp"
 
 namespace {
 

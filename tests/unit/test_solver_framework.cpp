@@ -13,7 +13,7 @@
 #include "core/aligned_field.hpp"
 #include "core/error.hpp"
 #include "scene.hpp"
-#include "solvers/dual_formulation.hpp"
+#include "formulations/dual_formulation.hpp"
 #include "solvers/monitor.hpp"
 #include "solvers/registry.hpp"
 

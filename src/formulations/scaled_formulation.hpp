@@ -7,9 +7,9 @@
 
 #include "core/loops.hpp"
 #include "physics/system.hpp"
-#include "solvers/control.hpp"
-#include "solvers/formulation.hpp"
-#include "solvers/scene_units.hpp"
+#include "formulations/control.hpp"
+#include "formulations/formulation.hpp"
+#include "formulations/scene_units.hpp"
 
 namespace asp {
 

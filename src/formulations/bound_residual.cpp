@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#include "solvers/bound_residual.hpp"
+#include "formulations/bound_residual.hpp"
 
 #include <cmath>
 

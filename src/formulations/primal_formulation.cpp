@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#include "solvers/primal_formulation.hpp"
+#include "formulations/primal_formulation.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include "core/error.hpp"
 #include "core/loops.hpp"
-#include "solvers/bound_residual.hpp"
+#include "formulations/bound_residual.hpp"
 
 namespace asp {
 

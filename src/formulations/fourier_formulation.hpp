@@ -31,7 +31,7 @@
 // substrates only: a free substrate's stiffness is not diagonal in the box's spectrum.
 #pragma once
 
-#include "solvers/soft_formulation.hpp"
+#include "formulations/soft_formulation.hpp"
 
 namespace asp {
 

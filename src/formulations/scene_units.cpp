@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#include "solvers/scene_units.hpp"
+#include "formulations/scene_units.hpp"
 
 #include <cfloat>
 #include <cmath>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#include "solvers/fourier_formulation.hpp"
+#include "formulations/fourier_formulation.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -6,7 +6,7 @@
 #pragma once
 
 #include "physics/system.hpp"
-#include "solvers/control.hpp"
+#include "formulations/control.hpp"
 
 namespace asp {
 

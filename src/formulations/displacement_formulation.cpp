@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#include "solvers/displacement_formulation.hpp"
+#include "formulations/displacement_formulation.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -13,7 +13,7 @@
 // units of P, and the error its largest magnitude.
 #pragma once
 
-#include "solvers/soft_formulation.hpp"
+#include "formulations/soft_formulation.hpp"
 
 namespace asp {
 

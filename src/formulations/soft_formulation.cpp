@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#include "solvers/soft_formulation.hpp"
+#include "formulations/soft_formulation.hpp"
 
 #include <cmath>
 #include <limits>

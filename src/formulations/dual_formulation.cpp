@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#include "solvers/dual_formulation.hpp"
+#include "formulations/dual_formulation.hpp"
 
 #include <algorithm>
 #include <array>
@@ -7,7 +7,7 @@
 #include <limits>
 
 #include "core/loops.hpp"
-#include "solvers/bound_residual.hpp"
+#include "formulations/bound_residual.hpp"
 
 namespace asp {
 

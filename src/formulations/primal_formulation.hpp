@@ -52,9 +52,9 @@
 #pragma once
 
 #include "physics/system.hpp"
-#include "solvers/control.hpp"
-#include "solvers/local_term.hpp"
-#include "solvers/scaled_formulation.hpp"
+#include "formulations/control.hpp"
+#include "formulations/local_term.hpp"
+#include "formulations/scaled_formulation.hpp"
 
 namespace asp {
 

@@ -23,8 +23,8 @@
 #pragma once
 
 #include "physics/system.hpp"
-#include "solvers/control.hpp"
-#include "solvers/scaled_formulation.hpp"
+#include "formulations/control.hpp"
+#include "formulations/scaled_formulation.hpp"
 
 namespace asp {
 

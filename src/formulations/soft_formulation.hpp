@@ -25,7 +25,7 @@
 #include <memory>
 
 #include "physics/potential.hpp"
-#include "solvers/scaled_formulation.hpp"
+#include "formulations/scaled_formulation.hpp"
 
 namespace asp {
 

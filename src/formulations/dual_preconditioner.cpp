@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "core/loops.hpp"
-#include "solvers/dual_formulation.hpp"
+#include "formulations/dual_formulation.hpp"
 
 namespace asp {
 
