@@ -68,4 +68,19 @@ double DualFormulation::update_preconditioned_direction(double beta) {
   return std::isfinite(r[1]) ? r[2] : r[1];
 }
 
+bool DualFormulation::precondition(double *z) {
+  // The scaled Hessian is k K^-1 (k the compliance factor); its inverse K/k is the normalised
+  // stiffness (which carries the transform's 1/N) over k.
+  linear_update_ready_ = false;  // the work spectrum is overwritten, as in hessian_product
+  substrate_.forward(z, spectrum_.data());
+  Complex *s = spectrum_.data();
+  const double *stiffness = substrate_.normalised_stiffness().data();
+  const double factor = 1.0 / compliance_factor_;
+  loops::for_each(static_cast<std::int64_t>(spectrum_.size()),
+                  [&](std::int64_t k) { s[k] *= factor * stiffness[k]; });
+  substrate_.backward(spectrum_.data(), z);
+  counters_.transforms += 2;
+  return true;
+}
+
 }  // namespace asp

@@ -74,7 +74,7 @@ AlgorithmSpec polonsky_keer_algorithm() {
   spec.substrates = {SubstrateKind::periodic, SubstrateKind::free};
   spec.interactions = {InteractionKind::hard_wall};
   spec.options = {{"preconditioner", OptionType::choice, 0.0, 0.0, 0.0, false,
-                   {"none", "fourier"},
+                   {"fourier", "none"},
                    "none: Polonsky & Keer's conjugate gradient as published; fourier: "
                    "preconditioned by the substrate's stiffness (E*|q|/2 on a periodic one) "
                    "applied to the gap on the contact set, one more transform pair per "
