@@ -285,25 +285,37 @@ Offer offer_for(const OptionValues &options) {
           ""};
 }
 
+// The preconditioner's choices: "auto" takes it where the objective is quadratic (the hard
+// wall without adhesion, a convex problem with one solution, reached in fewer iterations and
+// less time from 64^2 on; docs/performance.md), and not with adhesion: the adhesive problem
+// has several stable states, and the preconditioned path, whose directions move large parts
+// of the surface at once, can settle in another one than the plain path (of higher or of
+// lower energy; measured on the challenge's scene at 512^2 and 1024^2).
+bool preconditioned(const OptionValues &options, bool quadratic) {
+  const std::string &choice = options.text("preconditioner");
+  return choice == "fourier" || (choice == "auto" && quadratic);
+}
+
 template <class Variable>
-void run_on(System &system, Control control, double value, bool preconditioned,
+void run_on(System &system, Control control, double value, const OptionValues &options,
             Monitor &monitor) {
   Variable formulation(system, control, value);
   // Every objective the offer admits is quadratic, or separable (the gap with adhesion).
-  if (formulation.quadratic())
-    bugnicourt(formulation, monitor, preconditioned);
+  const bool quadratic = formulation.quadratic();
+  if (quadratic)
+    bugnicourt(formulation, monitor, preconditioned(options, quadratic));
   else
-    bugnicourt_separable(formulation, *formulation.local_term(), monitor, preconditioned);
+    bugnicourt_separable(formulation, *formulation.local_term(), monitor,
+                         preconditioned(options, quadratic));
   conclude(formulation, system, monitor);
 }
 
 void run(System &system, Control control, double value, const OptionValues &options,
          Monitor &monitor) {
-  const bool fourier = options.text("preconditioner") == "fourier";
   if (on_the_gap(options))
-    run_on<PrimalFormulation>(system, control, value, fourier, monitor);
+    run_on<PrimalFormulation>(system, control, value, options, monitor);
   else
-    run_on<DualFormulation>(system, control, value, fourier, monitor);
+    run_on<DualFormulation>(system, control, value, options, monitor);
 }
 
 }  // namespace
@@ -326,12 +338,14 @@ AlgorithmSpec bugnicourt_algorithm() {
                    "penetration control, not mean-gap on a free substrate; with or without "
                    "adhesion, tensile loads included)"},
                   {"preconditioner", OptionType::choice, 0.0, 0.0, 0.0, false,
-                   {"fourier", "none"},
-                   "none: the conjugate gradient as published; fourier: preconditioned by the "
-                   "inverse of the elastic operator of the objective (the compliance on the "
-                   "gap, the stiffness on the pressure) applied to the projected gradient, one "
-                   "more transform pair per iteration and 8 more bytes per pixel for fewer "
-                   "iterations on fine grids"}};
+                   {"auto", "fourier", "none"},
+                   "fourier: preconditioned by the inverse of the elastic operator of the "
+                   "objective (the compliance on the gap, the stiffness on the pressure) "
+                   "applied to the projected gradient, one more transform pair per iteration "
+                   "and 8 more bytes per pixel for iterations that grow far less with the "
+                   "grid; none: the conjugate gradient as published; auto: fourier without "
+                   "adhesion, none with it (the adhesive problem has several stable states, "
+                   "and the two paths can reach different ones)"}};
   spec.run = run;
   return spec;
 }
