@@ -15,11 +15,12 @@
 // library's fields, counted by its allocator) and the process's peak resident size, the FFT
 // pair of the grid with the same threads (skipped with --no-pair), progress every minute,
 // and the solve's iterations, time, time per iteration in FFT pairs, error, contact and
-// attractive fractions, and how it ended.
+// attractive fractions, the energy, and how it ended.
 //
 // usage: asperity_challenge [--size N] [--threads T] [--algorithm NAME[:VARIABLE]]
 //                           [--penetration D | --mean-gap G] [--tolerance T]
 //                           [--max-iterations K] [--no-pair] [--estimate]
+//                           [--option NAME=VALUE]   (a choice option of the algorithm)
 //        (defaults: 16384, the library's default threads, bugnicourt:gap, 1.5e-6 m, 1e-6,
 //         100000, measured FFT plans (--estimate: FFTW_ESTIMATE, which saves the planning,
 //         about 40 s at 16384^2, for a pair 1.6 times slower there))
@@ -30,6 +31,7 @@
 #include <cstring>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bench/bench_common.hpp"
@@ -55,6 +57,7 @@ struct Options {
   double max_iterations = 1e5;
   bool pair = true;
   bool estimate = false;  // FFTW_ESTIMATE plans instead of measured ones
+  std::vector<std::pair<std::string, std::string>> choices;  // --option NAME=VALUE
 };
 
 // A line a minute, so that an hour-long solve shows where it is.
@@ -116,6 +119,7 @@ int run(const Options &o) {
 
   asp::Solver solver(o.algorithm);
   if (!o.variable.empty()) solver.set_option("variable", o.variable);
+  for (const auto &choice : o.choices) solver.set_option(choice.first, choice.second);
   solver.set_option("tolerance", o.tolerance);
   solver.set_option("max_iterations", o.max_iterations);
   Progress progress;
@@ -143,6 +147,11 @@ int run(const Options &o) {
               100.0 * system.contact_fraction(), 100.0 * system.attractive_fraction(),
               1e-3 * system.mean_pressure(), 1e9 * system.mean_gap(),
               1e6 * system.state().penetration);
+  // The energy a solve minimises at fixed penetration, to compare the states two solves reach.
+  const double elastic = system.elastic_energy() + system.mean_mode_energy();
+  const double interaction = system.interaction_energy();
+  std::printf("energy %.9e J (elastic %.6e J, interaction %.6e J)\n", elastic + interaction,
+              elastic, interaction);
   std::printf("memory: system %.1f B/pixel, solve %.1f B/pixel, together %.1f B/pixel "
               "(%.2f GiB); the process's peak resident size %.2f GiB\n",
               system_bytes, solve_bytes, system_bytes + solve_bytes,
@@ -155,7 +164,7 @@ int usage(const char *program) {
   std::fprintf(stderr,
                "usage: %s [--size N] [--threads T] [--algorithm NAME[:VARIABLE]] "
                "[--penetration D | --mean-gap G] [--tolerance T] [--max-iterations K] [--no-pair] "
-               "[--estimate]\n",
+               "[--estimate] [--option NAME=VALUE]\n",
                program);
   return 2;
 }
@@ -188,6 +197,11 @@ int main(int argc, char **argv) {
       o.pair = false;
     } else if (arg == "--estimate") {
       o.estimate = true;
+    } else if (arg == "--option" && has_value) {
+      const std::string choice = argv[++i];
+      const std::size_t equals = choice.find('=');
+      if (equals == std::string::npos) return usage(argv[0]);
+      o.choices.emplace_back(choice.substr(0, equals), choice.substr(equals + 1));
     } else {
       return usage(argv[0]);
     }

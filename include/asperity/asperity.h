@@ -676,12 +676,13 @@ typedef struct asp_solver asp_solver;
  *   "pk"          Polonsky & Keer constrained conjugate gradient on the pressure (hard wall,
  *                 no adhesion, periodic or free substrate). Controls:
  *                 ASP_CONTROL_MEAN_PRESSURE, ASP_CONTROL_PENETRATION. Option
- *                 "preconditioner" (string): "none" (the default) or "fourier", the
- *                 substrate's stiffness applied to the gap on the contact set before each
- *                 conjugate-gradient update; on both substrates and under both controls it
- *                 reaches the same solution in 2 to 5 times fewer iterations on 512^2 to
- *                 2048^2 grids, each costing one more FFT pair, and 12 more bytes per pixel
- *                 (24 on a free substrate): faster from about 1024^2 on
+ *                 "preconditioner" (string): "auto" (the default; here the same as
+ *                 "fourier"), "fourier" or "none". "fourier": the substrate's stiffness
+ *                 applied to the gap on the contact set before each conjugate-gradient
+ *                 update; on both substrates and under both controls it reaches the same
+ *                 solution in 2 to 5 times fewer iterations on 512^2 to 2048^2 grids, each
+ *                 costing one more FFT pair, and 12 more bytes per pixel (24 on a free
+ *                 substrate). "none": the iteration as published
  *                 (docs/performance.md, "Iterations against the grid").
  *   "bugnicourt"  Bugnicourt et al.'s constrained conjugate gradient (OUT-LIN, 2018; hard
  *                 wall), on the pressure (option "variable" = "pressure", the default;
@@ -689,7 +690,14 @@ typedef struct asp_solver asp_solver;
  *                 ("gap"; controls ASP_CONTROL_MEAN_PRESSURE, tensile loads included with
  *                 adhesion, ASP_CONTROL_MEAN_GAP and ASP_CONTROL_PENETRATION, on a free
  *                 substrate not mean-gap; with or without adhesion, see
- *                 asp_system_set_adhesion).
+ *                 asp_system_set_adhesion). Option "preconditioner" (string): "fourier"
+ *                 (the inverse of the elastic operator of the objective, the compliance on
+ *                 the gap or the stiffness on the pressure, applied to the projected
+ *                 gradient: the same solution in 2 to 6 times fewer iterations, each costing
+ *                 one more FFT pair and 8 more bytes per pixel), "none" (as published), or
+ *                 "auto" (the default): "fourier" without adhesion, "none" with it, where
+ *                 the adhesive problem has several stable states and the two paths can
+ *                 reach different ones.
  *                 Faster than "pk" near full contact. Stops as stalled also when it has no
  *                 descent direction left.
  *   "lbfgsb"      Byrd, Lu, Nocedal & Zhu's L-BFGS-B (1995; hard wall, periodic or free

@@ -50,6 +50,8 @@ class DualFormulation final : public ScaledFormulation {
   void hessian_product(const double *direction, double *product) override;
   // K^-1 d, with d.K^-1 d summed in the pass over the spectrum (Parseval).
   double quadratic_part_product(const double *direction, double *product) override;
+  // z <- K z / k on the grid (k K^-1 is the quadratic part's Hessian, scaled).
+  bool precondition(double *z) override;
   double gradient_at_zero(double *out) override;
   double lower_bound() const override { return 0.0; }
   bool constrains_mean() const override { return control_ == Control::mean_pressure; }

@@ -15,17 +15,9 @@ double DualFormulation::precondition() {
   // r = g - shift on the contact set, 0 elsewhere (and outside the box on a free substrate,
   // which the transform pads with zeros).
   loops::for_each(n_, [&](std::int64_t i) { z[i] = p[i] > 0.0 ? g[i] - shift : 0.0; });
-  substrate_.forward(z, spectrum_.data());
-  // The scaled stiffness is K/k (the scaled compliance is k K^-1); the normalised stiffness
-  // carries the transform's 1/N. The work spectrum is free here: the gap's transform is
-  // done, and curvature() transforms the new direction into it afterwards.
-  Complex *s = spectrum_.data();
-  const double *stiffness = substrate_.normalised_stiffness().data();
-  const double factor = 1.0 / compliance_factor_;
-  loops::for_each(static_cast<std::int64_t>(spectrum_.size()),
-                  [&](std::int64_t k) { s[k] *= factor * stiffness[k]; });
-  substrate_.backward(spectrum_.data(), z);
-  counters_.transforms += 2;
+  // The work spectrum that precondition() takes is free here: the gap's transform is done,
+  // and curvature() transforms the new direction into it afterwards.
+  precondition(z);
 
   // z restricted to the contact set: its sum there (for its mean) and r.z. Off the contact
   // set z is left as it came; update_preconditioned_direction reads it only on the set.
@@ -66,6 +58,21 @@ double DualFormulation::update_preconditioned_direction(double beta) {
       });
   descent_ = r[0];
   return std::isfinite(r[1]) ? r[2] : r[1];
+}
+
+bool DualFormulation::precondition(double *z) {
+  // The scaled Hessian is k K^-1 (k the compliance factor); its inverse K/k is the normalised
+  // stiffness (which carries the transform's 1/N) over k.
+  linear_update_ready_ = false;  // the work spectrum is overwritten, as in hessian_product
+  substrate_.forward(z, spectrum_.data());
+  Complex *s = spectrum_.data();
+  const double *stiffness = substrate_.normalised_stiffness().data();
+  const double factor = 1.0 / compliance_factor_;
+  loops::for_each(static_cast<std::int64_t>(spectrum_.size()),
+                  [&](std::int64_t k) { s[k] *= factor * stiffness[k]; });
+  substrate_.backward(spectrum_.data(), z);
+  counters_.transforms += 2;
+  return true;
 }
 
 }  // namespace asp

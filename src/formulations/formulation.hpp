@@ -84,6 +84,16 @@ class Formulation {
   // bounded_size()) only.
   virtual const LocalTerm *local_term() const { return nullptr; }
 
+  // A preconditioner for the quadratic part: applies the inverse of the elastic operator
+  // that makes Q's Hessian (the compliance where the Hessian is the stiffness, the stiffness
+  // where it is the compliance), which is diagonal in Fourier space and removes the growth of
+  // the Hessian's condition number with the grid, to z in place (size() unknowns; one
+  // transform pair). Returns false, z untouched, where the formulation offers none.
+  virtual bool precondition(double *z) {
+    (void)z;
+    return false;
+  }
+
   // For solvers that integrate dynamics (FIRE, GFMD) and take their time step from it: an
   // upper bound on the largest eigenvalue of the Hessian at the current iterate, in this
   // inner product (the quadratic part's largest stiffness plus the largest curvature of the

@@ -87,6 +87,9 @@ class PrimalFormulation final : public ScaledFormulation {
   double quadratic_part(const double *x, double *gradient) override;
   double quadratic_part_at_zero(double *out) override;
   double quadratic_part_product(const double *direction, double *product) override;
+  // z <- k K^-1 z over the surface (K/k is the quadratic part's Hessian, scaled), the q = 0
+  // mode included wherever the substrate has a compliance there.
+  bool precondition(double *z) override;
   const LocalTerm *local_term() const override { return adhesive_ ? &local_term_ : nullptr; }
   double lower_bound() const override { return 0.0; }
   bool constrains_mean() const override { return control_ == Control::mean_gap; }

@@ -114,6 +114,52 @@ class BugnicourtPasses {
     });
   }
 
+  // Preconditioned: z <- M r, M the formulation's preconditioner applied to the projection r
+  // of gradient(i) at x (0 off N), made mean-free on N under a mean constraint, then
+  // d <- -z + beta d on N, 0 elsewhere, with beta = z.(H d_old) / curvature, which keeps d
+  // conjugate to d_old (product(i) is (H d_old)_i; curvature d_old.H d_old, not positive for
+  // a restart). Returns the descent r.d, negative unless r = 0 (M is positive definite), and
+  // the sum of extra(i, d_i). Three passes and M's transform pair.
+  template <class Gradient, class Product, class Extra>
+  std::array<double, 2> direct_preconditioned(const double *x, Gradient &&gradient,
+                                              const Projection &p, Product &&product,
+                                              double curvature, double *z, double *d,
+                                              Extra &&extra) const {
+    const double shift = p.shift, again = p.again;
+    // r_i, and whether i is in N.
+    const auto projected = [&](std::int64_t i, bool &kept) {
+      const double r = gradient(i) - shift;
+      kept = (x[i] > bound(i)) | (r <= 0.0);
+      return r - again;
+    };
+    loops::for_each(n_, [&](std::int64_t i) {
+      bool kept;
+      const double r = projected(i, kept);
+      z[i] = kept ? r : 0.0;
+    });
+    f_.precondition(z);
+    // Over N: its count, the sums of z, of z h and of h.
+    const auto s = loops::sums<4>(reductions_, n_, [&](std::int64_t i, double *t) {
+      bool kept;
+      projected(i, kept);
+      const double hi = product(i);
+      t[0] += kept ? 1.0 : 0.0;
+      t[1] += kept ? z[i] : 0.0;
+      t[2] += kept ? z[i] * hi : 0.0;
+      t[3] += kept ? hi : 0.0;
+    });
+    const double z_mean = mean_ && s[0] > 0.0 ? s[1] / s[0] : 0.0;
+    const double beta = curvature > 0.0 ? (s[2] - z_mean * s[3]) / curvature : 0.0;
+    return loops::sums<2>(reductions_, n_, [&](std::int64_t i, double *sum) {
+      bool kept;
+      const double r = projected(i, kept);
+      const double di = kept ? -(z[i] - z_mean) + beta * d[i] : 0.0;
+      d[i] = di;
+      sum[0] += kept ? r * di : 0.0;
+      sum[1] += extra(i, di);
+    });
+  }
+
   // Quadratic objectives: x <- s max(x + alpha d, lower), s restoring the mean (1 without a
   // mean constraint; a uniform iterate if nothing is left above the bound). With follow, in
   // the same pass, g <- s (g + alpha h) + (1 - s) c, the gradient at the new iterate if the

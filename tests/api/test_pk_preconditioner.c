@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-2.0-or-later */
-/* The "preconditioner" option of "pk" through the C API: "none" by default, "fourier" set and
- * read back by asp_solver_get_option_string, other values refused with
+/* The "preconditioner" option of "pk" through the C API: "auto" by default, "none" and
+ * "fourier" set and read back by asp_solver_get_option_string, other values refused with
  * ASP_ERR_INVALID_ARGUMENT naming the option and its values, and a preconditioned solve
  * reaching the plain one's state. */
 #include <math.h>
@@ -38,6 +38,8 @@ int main(void) {
   CHECK_OK(asp_solver_create("pk", &solver));
   CHECK_OK(asp_solver_set_tolerance(solver, 1e-10));
 
+  read_option(solver, "auto");
+  CHECK_OK(asp_solver_set_option_string(solver, "preconditioner", "none"));
   read_option(solver, "none");
   CHECK_OK(asp_solver_solve(solver, scene, ASP_CONTROL_MEAN_PRESSURE, 0.005));
   CHECK_OK(asp_solver_iterations(solver, &iterations_plain));
@@ -64,7 +66,7 @@ int main(void) {
     difference = fmax(difference, fabs(p[i] - plain[i]));
   }
   /* Both states meet the tolerance 1e-10 on the gap residual; their pressures differ by a
-   * few pixel stiffnesses times that (test_pk_preconditioner.cpp), far below 1e-8. */
+   * few pixel stiffnesses times that (test_fourier_preconditioner.cpp), far below 1e-8. */
   CHECK(largest > 0.0 && difference <= 1e-8 * largest);
 
   asp_solver_destroy(solver);
