@@ -241,21 +241,26 @@ constexpr const char *mean_gap_on_free =
 
 Offer offer_for(const OptionValues &options) {
   if (on_the_gap(options))
+    // The separable step knows the exponential adhesion, not a user's callback.
     return {{Control::mean_gap, Control::penetration, Control::mean_pressure},
-            {SubstrateKind::periodic, SubstrateKind::free},
-            {InteractionKind::hard_wall, InteractionKind::adhesive_hard_wall},
+            false,
+            {InteractionFamily::hard_wall, InteractionFamily::hard_wall_with_potential},
+            false,
             "variable = gap",
             {Control::penetration, Control::mean_pressure},
             mean_gap_on_free,
             {},
+            false,
             ""};
   return {{Control::mean_pressure, Control::penetration},
-          {SubstrateKind::periodic, SubstrateKind::free},
-          {InteractionKind::hard_wall},
+          false,
+          {InteractionFamily::hard_wall},
+          false,
           "variable = pressure",
           {},
           "",
           {},
+          false,
           ""};
 }
 
@@ -290,8 +295,7 @@ AlgorithmSpec bugnicourt_algorithm() {
       "energy; with or without adhesion)";
   spec.controls = {Control::mean_pressure, Control::mean_gap, Control::penetration};
   spec.offer_for = offer_for;
-  spec.substrates = {SubstrateKind::periodic, SubstrateKind::free};
-  spec.interactions = {InteractionKind::hard_wall, InteractionKind::adhesive_hard_wall};
+  spec.interactions = {InteractionFamily::hard_wall, InteractionFamily::hard_wall_with_potential};
   spec.options = {{"variable", OptionType::choice, 0.0, 0.0, 0.0, false, {"pressure", "gap"},
                    "the unknown: pressure (the dual problem; mean-pressure or penetration "
                    "control; no adhesion) or gap (the primal; mean-pressure, mean-gap or "

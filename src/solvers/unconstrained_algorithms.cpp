@@ -13,8 +13,6 @@
 namespace asp {
 namespace {
 
-const std::vector<InteractionKind> soft_interactions = {
-    InteractionKind::soft_wall, InteractionKind::lennard_jones, InteractionKind::user_potential};
 const std::vector<Control> soft_controls = {Control::penetration, Control::mean_pressure};
 
 // Options shared by the algorithms of one family.
@@ -92,10 +90,9 @@ AlgorithmSpec soft_spec(const char *name, const char *summary, bool periodic_onl
   spec.name = name;
   spec.summary = summary;
   spec.controls = soft_controls;
-  spec.substrates = periodic_only
-                        ? std::vector<SubstrateKind>{SubstrateKind::periodic}
-                        : std::vector<SubstrateKind>{SubstrateKind::periodic, SubstrateKind::free};
-  spec.interactions = soft_interactions;
+  spec.periodic_only = periodic_only;
+  spec.interactions = {InteractionFamily::soft_potential};
+  spec.callbacks = true;
   spec.free_controls = {Control::penetration};
   spec.free_reason =
       "mean-pressure control of an unconstrained formulation is offered on a periodic "
