@@ -585,7 +585,7 @@ ASP_EXPORT int asp_system_reset(asp_system *system);
 #define ASP_PENETRATION 305        /* delta */
 #define ASP_TOTAL_FORCE 306        /* mean pressure times lx*ly (1D: times lx) */
 #define ASP_K0 307                 /* the q = 0 stiffness in use (ASP_ERR_UNSUPPORTED on a
-                                      free system, which has none) */
+                                      free system, which has none; a layer's own M/t) */
 #define ASP_REFERENCE_PRESSURE 308 /* the reference pressure of the last solve */
 #define ASP_MEAN_MODE_ENERGY 309   /* the q = 0 term A pbar^2/(2 K~(0)), kept apart because it
                                       depends on K~(0); ELASTIC + MEAN_MODE = (a/2) sum p u;
