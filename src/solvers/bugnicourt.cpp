@@ -236,7 +236,7 @@ bool on_the_gap(const OptionValues &options) { return options.text("variable") =
 
 // On a free substrate the gap formulation takes penetration and load control.
 constexpr const char *mean_gap_on_free =
-    "mean-gap control of the gap formulation is offered on a periodic half-space only; on a "
+    "mean-gap control of the gap formulation is offered on a periodic substrate only; on a "
     "free one the mean displacement is not a free mode whose energy can be left out";
 
 Offer offer_for(const OptionValues &options) {

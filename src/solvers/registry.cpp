@@ -157,7 +157,7 @@ std::string describe(const AlgorithmSpec &algorithm) {
   text += "controls: " + names(algorithm.controls, control_name) + "\n";
   text += std::string("substrates: ") + periodic_substrates +
           (algorithm.periodic_only ? " only" : "; free half-space") + "\n";
-  if (!algorithm.free_controls.empty())
+  if (!algorithm.free_controls.empty() && !algorithm.periodic_only)
     text += "controls on a free half-space: " + names(algorithm.free_controls, control_name) +
             " (" + algorithm.free_reason + ")\n";
   text += "interactions: " + handled(algorithm.interactions, algorithm.callbacks) + "\n";

@@ -96,7 +96,7 @@ AlgorithmSpec soft_spec(const char *name, const char *summary, bool periodic_onl
   spec.free_controls = {Control::penetration};
   spec.free_reason =
       "mean-pressure control of an unconstrained formulation is offered on a periodic "
-      "half-space only; on a free one the rigid-body penetration is not a free mode of the "
+      "substrate only; on a free one the rigid-body penetration is not a free mode of the "
       "displacement through which the mean pressure could be imposed";
   spec.options = std::move(options);
   spec.run = run;
@@ -110,7 +110,7 @@ AlgorithmSpec lbfgs_algorithm() {
       "lbfgs",
       "limited-memory BFGS (Nocedal 1980) with a strong Wolfe line search on the displacement: "
       "the unconstrained problem of a soft potential (thesis sections 2.2.1 and 3.1.6); "
-      "mean-pressure control on a periodic half-space only",
+      "mean-pressure control on a periodic substrate only",
       false, {memory_option()}, run_lbfgs<DisplacementFormulation>);
 }
 
