@@ -74,7 +74,7 @@ void PeriodicHalfSpace::set_k0(double k0) {
                 std::string("argument 'system' is on a ") + law_->name() +
                     ", whose stiffness under a uniform pressure, K~(0) = " +
                     format_number(law_->at_zero()) +
-                    ", is the body's own (M/t of the layer), not a convention to set");
+                    ", is the body's own, not a convention to set");
   require_positive(k0, "k0");
   const double n = static_cast<double>(grid_.n_pixels());
   const double pixel = (nonzero_stiffness_sum_ + k0) / n;
