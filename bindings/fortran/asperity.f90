@@ -144,7 +144,8 @@ module asperity
             asp_topography_sinusoid, asp_topography_double_sinewave, &
             asp_topography_self_affine, asp_topography_statistics, asp_topography_detrend, &
             asp_topography_power_spectrum
-  public :: asp_system_create, asp_system_create_free, asp_system_destroy, &
+  public :: asp_system_create, asp_system_create_free, asp_system_create_layer, &
+            asp_system_destroy, &
             asp_system_set_topography, &
             asp_system_set_k0, asp_system_set_adhesion, asp_system_set_soft_wall, &
             asp_system_set_lennard_jones, asp_system_set_hard_wall, asp_system_set_potential, &
@@ -278,6 +279,15 @@ module asperity
       real(c_double), value :: contact_modulus
       type(c_ptr), intent(out) :: out
       integer(c_int) :: asp_system_create_free
+    end function
+    ! An elastic layer of thickness t and Poisson's ratio 0 <= nu < 0.5 on a rigid base.
+    function asp_system_create_layer(grid, contact_modulus, poisson_ratio, thickness, out) &
+        bind(c, name='asp_system_create_layer')
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: grid
+      real(c_double), value :: contact_modulus, poisson_ratio, thickness
+      type(c_ptr), intent(out) :: out
+      integer(c_int) :: asp_system_create_layer
     end function
     subroutine asp_system_destroy(system) bind(c, name='asp_system_destroy')
       import :: c_ptr

@@ -28,7 +28,8 @@
  * Elasticity p~(q) = K~(q) u~(q), K~(q) = E*|q|/2. The q = 0 mode uses a finite stiffness
  *            K~(0) (see asp_system_set_k0); it links mean pressure and penetration, and so
  *            sets the force-penetration curve, never the pressure field under mean-pressure
- *            control.
+ *            control. An elastic layer on a rigid base has its own K~(q) and K~(0)
+ *            (asp_system_create_layer).
  *
  * ---------------------------------------------------------------------------------------------
  * Handles and lifetimes
@@ -400,6 +401,32 @@ ASP_EXPORT int asp_system_create(const asp_grid *grid, double contact_modulus, a
  * sums finite, normal doubles (ASP_ERR_INVALID_ARGUMENT naming 'contact_modulus'). */
 ASP_EXPORT int asp_system_create_free(const asp_grid *grid, double contact_modulus,
                                       asp_system **out);
+
+/* A periodic elastic layer of thickness t = thickness > 0, contact modulus
+ * E* = contact_modulus > 0 and Poisson's ratio nu = poisson_ratio, 0 <= nu < 1/2, bonded
+ * (no slip) to a rigid base and free of shear at its top (Carbone & Mangialardi, J. Mech.
+ * Phys. Solids 56 (2008)). Its stiffness, with s = |q| t and kappa = 3 - 4 nu, is
+ *   K~(q) = (E*|q|/2) [kappa cosh 2s + 2 s^2 + (1 + kappa^2)/2] / [kappa sinh 2s - 2s]:
+ * the half-space's E*|q|/2 for wavelengths much shorter than t (the difference falls as
+ * s^2 exp(-2s)), and for wavelengths much longer the stiffness of a column under uniaxial
+ * strain, M/t, M = E(1 - nu)/((1 + nu)(1 - 2 nu)), E = E*(1 - nu^2) (a Winkler foundation).
+ * That M/t is the layer's own K~(0): a uniform pressure p compresses it by p t/M, so the
+ * penetration under a load is physical, not a convention. It is used like a periodic system
+ * (every solver that takes asp_system_create takes it, under the same controls), with these
+ * differences:
+ *   - asp_system_get with ASP_K0 returns M/t, and asp_system_set_k0 returns
+ *     ASP_ERR_UNSUPPORTED;
+ *   - ASP_ELASTIC_ENERGY is, as on the half-space, that of the q != 0 modes, and
+ *     ASP_MEAN_MODE_ENERGY = A pbar^2/(2 M/t) is the layer's physical energy of uniform
+ *     compression: their sum is its whole elastic energy.
+ * 1D grids take it too (plane strain, E* the plane-strain modulus). Refused with
+ * ASP_ERR_INVALID_ARGUMENT naming the argument: E* or t not positive and finite, nu outside
+ * [0, 1/2) (at nu = 1/2 the bonded incompressible layer has an infinite K~(0)), M/t not a
+ * finite, normal double ('thickness'), or a K~ of some mode of the grid, or its inverse,
+ * that is not ('contact_modulus'). */
+ASP_EXPORT int asp_system_create_layer(const asp_grid *grid, double contact_modulus,
+                                       double poisson_ratio, double thickness,
+                                       asp_system **out);
 /* Frees the system (NULL is ignored). Called from a callback of a call that is using the
  * system (a solve, or asp_system_get evaluating a potential), it does nothing and says so in
  * asp_last_error_message(). */
@@ -418,7 +445,8 @@ ASP_EXPORT int asp_system_set_topography(asp_system *system, const double *heigh
  * and not ASP_ELASTIC_ENERGY (see ASP_MEAN_MODE_ENERGY). The current state keeps its pressure
  * and gap; its penetration moves by pbar (1/K~(0)new - 1/K~(0)old), so that it stays an
  * equilibrium (refused if that penetration is not a finite double). A free system (see
- * asp_system_create_free) has no K~(0): ASP_ERR_UNSUPPORTED. */
+ * asp_system_create_free) has no K~(0), and a layer's (asp_system_create_layer) is its own,
+ * M/t: both ASP_ERR_UNSUPPORTED. */
 ASP_EXPORT int asp_system_set_k0(asp_system *system, double k0);
 
 /* The interaction: a hard wall (g >= 0) with exponential adhesion, an energy per unit area
@@ -557,7 +585,7 @@ ASP_EXPORT int asp_system_reset(asp_system *system);
 #define ASP_PENETRATION 305        /* delta */
 #define ASP_TOTAL_FORCE 306        /* mean pressure times lx*ly (1D: times lx) */
 #define ASP_K0 307                 /* the q = 0 stiffness in use (ASP_ERR_UNSUPPORTED on a
-                                      free system, which has none) */
+                                      free system, which has none; a layer's own M/t) */
 #define ASP_REFERENCE_PRESSURE 308 /* the reference pressure of the last solve */
 #define ASP_MEAN_MODE_ENERGY 309   /* the q = 0 term A pbar^2/(2 K~(0)), kept apart because it
                                       depends on K~(0); ELASTIC + MEAN_MODE = (a/2) sum p u;

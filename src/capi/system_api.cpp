@@ -50,6 +50,21 @@ int asp_system_create_free(const asp_grid *grid, double contact_modulus, asp_sys
   });
 }
 
+int asp_system_create_layer(const asp_grid *grid, double contact_modulus, double poisson_ratio,
+                            double thickness, asp_system **out) {
+  if (out != nullptr) *out = nullptr;
+  return guarded_on("asp_system_create_layer", grid_of(grid), [&](Agreement &agreement) {
+    asp::require_not_null(grid, "grid");
+    asp::require_not_null(out, "out");
+    agreement.checks_passed({contact_modulus, poisson_ratio, thickness},
+                            "arguments 'contact_modulus', 'poisson_ratio' and 'thickness'");
+    std::unique_ptr<asp_system> handle(new asp_system);
+    handle->system.reset(new asp::System(
+        grid->grid, std::make_unique<asp::LayerLaw>(contact_modulus, poisson_ratio, thickness)));
+    *out = handle.release();
+  });
+}
+
 void asp_system_destroy(asp_system *system) {
   // A system in use by a running call (destroyed from its callback) is left alone, and the
   // reason is the last error message.

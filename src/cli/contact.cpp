@@ -275,8 +275,10 @@ Contact make_contact(const Scene &scene, const ComputeOptions &compute) {
   }
   asp_system *system = nullptr;
   const std::string where = scene.source + ": [substrate]";
-  check_given(c.periodic ? asp_system_create(c.grid.get(), sub.contact_modulus, &system)
-                         : asp_system_create_free(c.grid.get(), sub.contact_modulus, &system),
+  check_given(sub.layer    ? asp_system_create_layer(c.grid.get(), sub.contact_modulus,
+                                                     sub.poisson_ratio, sub.thickness, &system)
+              : c.periodic ? asp_system_create(c.grid.get(), sub.contact_modulus, &system)
+                           : asp_system_create_free(c.grid.get(), sub.contact_modulus, &system),
               where);
   c.system.reset(system);
   check_given(asp_system_set_topography(system, c.surface.heights.data(),

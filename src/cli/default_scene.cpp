@@ -15,7 +15,8 @@ lx = 1.0              # box size; ly defaults to lx * ny / nx
 unit = ""             # length unit of the scene (m, mm, um, nm, ...); "" dimensionless
 
 [substrate]
-type = "periodic"     # periodic, or free (non-periodic) for measured surfaces
+type = "periodic"     # periodic, free (non-periodic) for measured surfaces, or layer
+                      # (an elastic layer on a rigid base: thickness, poisson_ratio)
 contact_modulus = 1.0 # E*: pressures are in its unit
 
 [topography]

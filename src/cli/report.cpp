@@ -53,9 +53,16 @@ void print_scene(std::FILE *out, const Scene &scene, const Contact &contact) {
   std::fprintf(out, "asperity %s: %s%s%s\n", asp_version_string(), scene.source.c_str(),
                scene.title.empty() ? "" : ": ", scene.title.c_str());
   std::fprintf(out, "surface           %s\n", contact.surface.description.c_str());
-  std::fprintf(out, "substrate         %s, E* = %g\n",
-               contact.periodic ? "periodic" : "free (non-periodic)",
-               scene.substrate.contact_modulus);
+  if (scene.substrate.layer)
+    std::fprintf(out,
+                 "substrate         periodic elastic layer on a rigid base, E* = %g, "
+                 "thickness %g, Poisson's ratio %g\n",
+                 scene.substrate.contact_modulus, scene.substrate.thickness,
+                 scene.substrate.poisson_ratio);
+  else
+    std::fprintf(out, "substrate         %s, E* = %g\n",
+                 contact.periodic ? "periodic" : "free (non-periodic)",
+                 scene.substrate.contact_modulus);
   std::fprintf(out, "interaction       %s\n",
                interaction_text(scene.interaction, contact.surface.unit).c_str());
   for (const std::string &note : contact.surface.notes)

@@ -154,11 +154,26 @@ GridSpec read_grid(SceneTable t, bool from_file) {
 
 SubstrateSpec read_substrate(SceneTable t, bool measured) {
   SubstrateSpec substrate;
-  t.accepts({"type", "contact_modulus", "k0", "pressure_unit"});
+  t.accepts({"type", "contact_modulus", "k0", "pressure_unit", "thickness", "poisson_ratio"});
   // Measured surfaces are not periodic: their default is the free half-space.
   substrate.type_given = t.has("type");
-  substrate.periodic =
-      t.choice("type", {"periodic", "free"}, measured ? "free" : "periodic") == "periodic";
+  const std::string type =
+      t.choice("type", {"periodic", "free", "layer"}, measured ? "free" : "periodic");
+  substrate.periodic = type != "free";
+  substrate.layer = type == "layer";
+  if (substrate.layer) {
+    substrate.thickness = t.positive("thickness");
+    substrate.poisson_ratio = t.real("poisson_ratio");
+    if (!(substrate.poisson_ratio >= 0.0 && substrate.poisson_ratio < 0.5))
+      t.refuse("poisson_ratio",
+               "must be at least 0 and below 0.5 (at 0.5 the bonded, incompressible layer "
+               "cannot be compressed)");
+    if (t.has("k0"))
+      t.refuse("k0", "the layer's stiffness under a uniform pressure, M/thickness, is its own");
+  } else {
+    for (const char *key : {"thickness", "poisson_ratio"})
+      if (t.has(key)) t.refuse(key, "belongs to type = \"layer\" only");
+  }
   substrate.contact_modulus = t.positive("contact_modulus");
   // A name to show with pressures ("MPa"): nothing is converted.
   substrate.pressure_unit = t.text("pressure_unit", "");

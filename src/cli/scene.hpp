@@ -27,6 +27,10 @@ struct SubstrateSpec {
   double contact_modulus = 1.0;  // E*
   std::string pressure_unit;     // the unit of E* and every pressure, shown only ("" none)
   double k0 = 0.0;               // 0: the library's default
+  // An elastic layer of this thickness and Poisson's ratio on a rigid base (periodic).
+  bool layer = false;
+  double thickness = 0.0;
+  double poisson_ratio = 0.0;
 };
 
 enum class TopographyKind { flat, sphere, paraboloid, sinusoid, double_sinewave, self_affine, file };

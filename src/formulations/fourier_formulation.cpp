@@ -12,10 +12,10 @@ namespace asp {
 
 FourierFormulation::FourierFormulation(System &system, Control control, double value)
     : SoftFormulation(system, control, value) {
-  if (substrate_.kind() != SubstrateKind::periodic)
+  if (!substrate_.periodic())
     throw Error(Status::unsupported,
-                "the Fourier formulation works on a periodic half-space only: on a " +
-                    std::string(substrate_name(substrate_.kind())) +
+                "the Fourier formulation works on a periodic substrate only: on a " +
+                    std::string(substrate_.name()) +
                     " the stiffness is not diagonal in the box's spectrum");
   const SpectralLayout &layout = substrate_.layout();
   entries_ = layout.size();

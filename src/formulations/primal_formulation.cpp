@@ -27,8 +27,8 @@ PrimalFormulation::PrimalFormulation(System &system, Control control, double val
   unknowns_ = substrate_.surface_size();
   if (control == Control::mean_gap && substrate_.surface_beyond_grid())
     throw Error(Status::unsupported,
-                "mean-gap control of the gap formulation is offered on a periodic half-space "
-                "only: on a " + std::string(substrate_name(substrate_.kind())) +
+                "mean-gap control of the gap formulation is offered on a periodic substrate "
+                "only: on a " + std::string(substrate_.name()) +
                     " the mean displacement is not a free mode whose energy can be left out; "
                     "use penetration control");
   penetration_ = control == Control::penetration ? target_ : 0.0;

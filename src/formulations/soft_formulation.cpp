@@ -21,8 +21,7 @@ SoftFormulation::SoftFormulation(System &system, Control control, double value)
   if (control == Control::mean_pressure && !substrate_.has_k0())
     throw Error(Status::unsupported,
                 "mean-pressure control of an unconstrained formulation is offered on a "
-                "periodic half-space only: on a " +
-                    std::string(substrate_name(substrate_.kind())) +
+                "periodic substrate only: on a " + std::string(substrate_.name()) +
                     " the rigid-body penetration is not a free mode of the displacement; use "
                     "penetration control");
   load_ = control == Control::mean_pressure ? target_ : 0.0;

@@ -51,6 +51,8 @@ class FreeHalfSpace final : public Substrate {
   FreeHalfSpace(const Grid &grid, double contact_modulus);
 
   SubstrateKind kind() const override { return SubstrateKind::free; }
+  const char *name() const override { return "free half-space"; }
+  MeanStiffness mean_stiffness() const override { return MeanStiffness::none; }
   const Grid &grid() const override { return grid_; }
   double contact_modulus() const override { return modulus_; }
 

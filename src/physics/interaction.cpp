@@ -18,6 +18,15 @@ const char *interaction_name(InteractionKind kind) {
   return "unknown";
 }
 
+const char *family_name(InteractionFamily family) {
+  switch (family) {
+    case InteractionFamily::hard_wall: return "non-adhesive hard wall";
+    case InteractionFamily::hard_wall_with_potential: return "hard wall with a potential";
+    case InteractionFamily::soft_potential: return "soft potential";
+  }
+  return "unknown";
+}
+
 void Interaction::contact_map(const Grid &grid, const ContactState &state, double *out) const {
   const double *g = state.gap.data();
   loops::for_each(grid.local_pixels(), [&](std::int64_t i) { out[i] = g[i] <= 0.0 ? 1.0 : 0.0; });

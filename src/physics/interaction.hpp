@@ -31,10 +31,21 @@ enum class InteractionKind {
 };
 const char *interaction_name(InteractionKind kind);
 
+// What an interaction is to a solver: the hard wall alone (no potential to evaluate), the
+// hard wall with a potential on the open gap, or a soft potential that the gap may cross.
+enum class InteractionFamily { hard_wall, hard_wall_with_potential, soft_potential };
+const char *family_name(InteractionFamily family);
+
+// Solvers ask an interaction what it can do (family(), whether its potential is a user's
+// callback, known only by its values); kind() names it in reports and messages.
 class Interaction {
  public:
   virtual ~Interaction() = default;
   virtual InteractionKind kind() const = 0;
+  virtual InteractionFamily family() const = 0;
+  // Whether the potential is a user's callback: the library knows its values, not its
+  // range, its largest tension or a bound on its curvature.
+  virtual bool potential_from_callback() const { return false; }
   // The contact map of a state: 1.0 on the pixels in contact, 0.0 elsewhere, into out (the
   // grid's local pixels). With the hard wall, the pixels on the wall, g <= 0: every solve
   // leaves g exactly 0 on its active set and >= 0 elsewhere, so that the rule is never a
@@ -43,7 +54,7 @@ class Interaction {
   // PotentialInteraction.
   virtual void contact_map(const Grid &grid, const ContactState &state, double *out) const;
   // Whether the hard wall g >= 0 bounds the gap (every interaction but the soft walls).
-  virtual bool has_hard_wall() const { return true; }
+  bool has_hard_wall() const { return family() != InteractionFamily::soft_potential; }
   // The mean of the contact map (a count of pixels over their number, exact in doubles, so
   // that the mean of contact_map() taken anywhere gives the same number).
   double contact_fraction(const Grid &grid, const ContactState &state) const;
@@ -60,6 +71,7 @@ class Interaction {
 class HardWall final : public Interaction {
  public:
   InteractionKind kind() const override { return InteractionKind::hard_wall; }
+  InteractionFamily family() const override { return InteractionFamily::hard_wall; }
   double energy(const Grid &, const ContactState &) const override { return 0.0; }
 };
 
@@ -93,6 +105,9 @@ class ExponentialAdhesion final : public Interaction {
   // work > 0 and range > 0 (System::set_adhesion checks them).
   ExponentialAdhesion(double work, double range) : potential_{work, range} {}
   InteractionKind kind() const override { return InteractionKind::adhesive_hard_wall; }
+  InteractionFamily family() const override {
+    return InteractionFamily::hard_wall_with_potential;
+  }
   double energy(const Grid &grid, const ContactState &state) const override;
 
   const ExponentialPotential &potential() const { return potential_; }
@@ -108,18 +123,26 @@ class ExponentialAdhesion final : public Interaction {
 // repels (phi'(g) < 0).
 class PotentialInteraction final : public Interaction {
  public:
+  // kind: soft_wall, lennard_jones, user_potential (without the wall) or
+  // user_potential_hard_wall (with it).
   PotentialInteraction(InteractionKind kind, std::unique_ptr<Potential> potential)
       : kind_(kind), potential_(std::move(potential)) {}
   InteractionKind kind() const override { return kind_; }
+  InteractionFamily family() const override {
+    return kind_ == InteractionKind::user_potential_hard_wall
+               ? InteractionFamily::hard_wall_with_potential
+               : InteractionFamily::soft_potential;
+  }
+  bool potential_from_callback() const override {
+    return kind_ == InteractionKind::user_potential ||
+           kind_ == InteractionKind::user_potential_hard_wall;
+  }
   // Both evaluate the potential (a user's callback may throw Error(callback)); contact_map,
   // and the fractions that use it, only without the hard wall.
   void contact_map(const Grid &grid, const ContactState &state, double *out) const override;
   double energy(const Grid &grid, const ContactState &state) const override;
 
   const Potential &potential() const { return *potential_; }
-  bool has_hard_wall() const override {
-    return kind_ == InteractionKind::user_potential_hard_wall;
-  }
 
  private:
   // phi and phi' at the state's gaps (clipped at the wall if there is one).
@@ -131,21 +154,12 @@ class PotentialInteraction final : public Interaction {
 
 // The potential of an interaction, or null if it has none of this kind.
 inline const PotentialInteraction *potential_interaction(const Interaction &interaction) {
-  switch (interaction.kind()) {
-    case InteractionKind::soft_wall:
-    case InteractionKind::lennard_jones:
-    case InteractionKind::user_potential:
-    case InteractionKind::user_potential_hard_wall:
-      return static_cast<const PotentialInteraction *>(&interaction);
-    default: return nullptr;
-  }
+  return dynamic_cast<const PotentialInteraction *>(&interaction);
 }
 
 // The exponential adhesion of an interaction, or null if it has none.
 inline const ExponentialAdhesion *exponential_adhesion(const Interaction &interaction) {
-  return interaction.kind() == InteractionKind::adhesive_hard_wall
-             ? static_cast<const ExponentialAdhesion *>(&interaction)
-             : nullptr;
+  return dynamic_cast<const ExponentialAdhesion *>(&interaction);
 }
 
 }  // namespace asp

@@ -254,12 +254,12 @@ NormalStiffness normal_stiffness(const System &system) {
   // The loops run on the grid's threads, as a solve's do (its FFTs were planned with them).
   const ThreadScope threads(system.grid().threads());
   const Interaction &interaction = system.interaction();
-  switch (interaction.kind()) {
-    case InteractionKind::hard_wall: return hard_wall_stiffness(system);
-    case InteractionKind::adhesive_hard_wall:
-    case InteractionKind::user_potential_hard_wall: return potential_stiffness(system, true);
-    default: return potential_stiffness(system, false);
+  switch (interaction.family()) {
+    case InteractionFamily::hard_wall: return hard_wall_stiffness(system);
+    case InteractionFamily::hard_wall_with_potential: return potential_stiffness(system, true);
+    case InteractionFamily::soft_potential: break;
   }
+  return potential_stiffness(system, false);
 }
 
 }  // namespace asp

@@ -15,49 +15,66 @@ bool normal(double v) { return std::isfinite(v) && v >= DBL_MIN; }
 }  // namespace
 
 PeriodicHalfSpace::PeriodicHalfSpace(const Grid &grid, double contact_modulus)
-    : grid_(grid), layout_(grid.half_spectrum()), modulus_(contact_modulus) {
-  require_positive(contact_modulus, "contact_modulus");
+    : PeriodicHalfSpace(grid, (require_positive(contact_modulus, "contact_modulus"),
+                               std::make_unique<HalfSpaceLaw>(contact_modulus))) {}
+
+PeriodicHalfSpace::PeriodicHalfSpace(const Grid &grid, std::unique_ptr<const StiffnessLaw> law)
+    : grid_(grid),
+      law_(std::move(law)),
+      layout_(grid.half_spectrum()),
+      modulus_(law_->contact_modulus()) {
   const double n = static_cast<double>(grid.n_pixels());
 
-  // Every mode's stiffness, its inverse with the 1/N of the transform, and the sums below
-  // must be finite, normal doubles; otherwise the scene cannot be represented.
-  double q_min = HUGE_VAL, q_max = 0.0;
-  layout_.for_each([&](std::int64_t, double q, double) {
-    if (q > 0.0) q_min = std::fmin(q_min, q);
-    q_max = std::fmax(q_max, q);
-  });
-  double extremes[2] = {-q_min, q_max};
-  grid.reductions().combine_maxima(extremes, 2);
-  q_min = -extremes[0];
-  q_max = extremes[1];
-  // Default K~(0): mean of K~ at the lowest wavevector of each axis with more than one pixel;
-  // a single pixel has none, and then the x box length sets the scale.
+  // Default K~(0), where the law has none of its own: mean of K~ at the lowest wavevector of
+  // each axis with more than one pixel; a single pixel has none, and then the x box length
+  // sets the scale.
   const double two_pi = 6.283185307179586476925286766559;
-  double sum = 0.0;
-  int axes = 0;
-  if (grid.nx() > 1) sum += 0.5 * modulus_ * (two_pi / grid.lx()), ++axes;
-  if (grid.ny() > 1) sum += 0.5 * modulus_ * (two_pi / grid.ly()), ++axes;
-  k0_ = axes > 0 ? sum / axes : 0.5 * modulus_ * (two_pi / grid.lx());
+  if (law_->at_zero() > 0.0) {
+    k0_ = law_->at_zero();
+  } else {
+    double sum = 0.0;
+    int axes = 0;
+    if (grid.nx() > 1) sum += law_->at(two_pi / grid.lx()), ++axes;
+    if (grid.ny() > 1) sum += law_->at(two_pi / grid.ly()), ++axes;
+    k0_ = axes > 0 ? sum / axes : law_->at(two_pi / grid.lx());
+  }
 
+  // Every mode's stiffness, its inverse with the 1/N of the transform, and the sums below
+  // must be finite, normal doubles; otherwise the scene cannot be represented. A law need
+  // not be monotonic (a layer's dips below its K~(0) before it rises), so the extremes are
+  // taken over every mode.
+  double extremes[2] = {-k0_, k0_};  // -(smallest), largest
   nonzero_stiffness_sum_ = 0.0;
   layout_.for_each([&](std::int64_t, double q, double weight) {
-    if (q > 0.0) nonzero_stiffness_sum_ += weight * stiffness_at(q);
+    if (!(q > 0.0)) return;
+    const double k = stiffness_at(q);
+    nonzero_stiffness_sum_ += weight * k;
+    extremes[0] = std::fmax(extremes[0], -k);
+    extremes[1] = std::fmax(extremes[1], k);
   });
   grid.reductions().combine_sums(&nonzero_stiffness_sum_, 1);
+  grid.reductions().combine_maxima(extremes, 2);
   pixel_stiffness_ = (nonzero_stiffness_sum_ + k0_) / n;
 
-  const double k_min = q_min < HUGE_VAL ? std::fmin(stiffness_at(q_min), k0_) : k0_;
-  const double k_max = std::fmax(stiffness_at(q_max), k0_);
+  const double k_min = -extremes[0];
+  const double k_max = extremes[1];
   if (!normal(k_min) || !normal(n * k_max) || !normal(1.0 / (n * k_min)) ||
       !normal(pixel_stiffness_) || !normal(nonzero_stiffness_sum_ + k0_))
     throw Error(Status::invalid_argument,
-                "argument 'contact_modulus' is " + format_number(contact_modulus) +
-                    ": on this grid the stiffness E*|q|/2 of its modes ranges from " +
-                    format_number(k_min) + " to " + format_number(k_max) +
+                "argument 'contact_modulus' is " + format_number(modulus_) +
+                    ": on this grid the stiffness " + law_->formula() +
+                    " of its modes ranges from " + format_number(k_min) + " to " +
+                    format_number(k_max) +
                     ", which doubles cannot hold with their inverses; rescale the units");
 }
 
 void PeriodicHalfSpace::set_k0(double k0) {
+  if (law_->at_zero() > 0.0)
+    throw Error(Status::unsupported,
+                std::string("argument 'system' is on a ") + law_->name() +
+                    ", whose stiffness under a uniform pressure, K~(0) = " +
+                    format_number(law_->at_zero()) +
+                    ", is the body's own, not a convention to set");
   require_positive(k0, "k0");
   const double n = static_cast<double>(grid_.n_pixels());
   const double pixel = (nonzero_stiffness_sum_ + k0) / n;

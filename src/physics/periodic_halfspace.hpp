@@ -1,12 +1,17 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// The periodic elastic half-space: p~(q) = K~(q) u~(q) with K~(q) = E*|q|/2 (thesis eq. 5).
+// A periodic elastic substrate: p~(q) = K~(q) u~(q) with K~(q) its stiffness law
+// (stiffness_law.hpp), by default the half-space's E*|q|/2 (thesis eq. 5).
 //
 // The q = 0 mode has no stiffness in a periodic half-space; a finite K~(0) links mean pressure
 // and mean displacement so that penetration control is well posed. Its default is the mean of
 // K~ at the lowest non-zero wavevector along each axis that has more than one pixel (the
-// thesis's choice; E* pi/lx in 1D).
+// thesis's choice; E* pi/lx in 1D). A law with a K~(0) of its own (the layer on a rigid base)
+// uses that, and it cannot be changed.
 #pragma once
 
+#include <memory>
+
+#include "physics/stiffness_law.hpp"
 #include "physics/substrate.hpp"
 
 namespace asp {
@@ -16,8 +21,15 @@ class PeriodicHalfSpace final : public Substrate {
   // Throws Error(invalid_argument) naming 'contact_modulus' when the stiffness of some mode
   // of the grid, or its inverse, would not be a finite, normal double.
   PeriodicHalfSpace(const Grid &grid, double contact_modulus);
+  // The same with any stiffness law (not null).
+  PeriodicHalfSpace(const Grid &grid, std::unique_ptr<const StiffnessLaw> law);
 
   SubstrateKind kind() const override { return SubstrateKind::periodic; }
+  const char *name() const override { return law_->name(); }
+  MeanStiffness mean_stiffness() const override {
+    return law_->at_zero() > 0.0 ? MeanStiffness::physical : MeanStiffness::convention;
+  }
+  const StiffnessLaw &law() const { return *law_; }
   const Grid &grid() const override { return grid_; }
   double contact_modulus() const override { return modulus_; }
 
@@ -41,6 +53,7 @@ class PeriodicHalfSpace final : public Substrate {
 
   bool has_k0() const override { return true; }
   double k0() const override { return k0_; }
+  // Throws Error(unsupported) naming 'k0' when the law has a K~(0) of its own.
   void set_k0(double k0) override;
   // A uniform pressure moves only the q = 0 mode.
   double uniform_pressure_stiffness() const override { return k0_; }
@@ -55,10 +68,11 @@ class PeriodicHalfSpace final : public Substrate {
   void pressure_from_displacement(const double *displacement, double *pressure) const;
 
  private:
-  double stiffness_at(double q) const { return q > 0.0 ? 0.5 * modulus_ * q : k0_; }
+  double stiffness_at(double q) const { return q > 0.0 ? law_->at(q) : k0_; }
   void apply(const Field &kernel, const double *in, double *out) const;
 
   const Grid &grid_;
+  std::unique_ptr<const StiffnessLaw> law_;
   SpectralLayout layout_;
   double modulus_;
   double k0_;

@@ -16,13 +16,27 @@
 
 namespace asp {
 
+// Whether the substrate's box repeats (periodic) or is alone in an unloaded surface (free).
 enum class SubstrateKind { periodic, free };
 const char *substrate_name(SubstrateKind kind);
 
+// What the substrate says about the stiffness K~(0) of its mean (q = 0) displacement mode:
+// a convention that links mean pressure and mean displacement, which the user may set (the
+// periodic half-space); a stiffness of the body itself (a layer on a rigid base); or none,
+// the mean displacement following from the elasticity (the free half-space).
+enum class MeanStiffness { convention, physical, none };
+
+// What solvers and formulations ask of a substrate is what it can do, not which one it is:
+// periodic() (a box whose operator is diagonal on the grid's own spectrum) and
+// mean_stiffness(); name() is for reports and messages.
 class Substrate {
  public:
   virtual ~Substrate() = default;
   virtual SubstrateKind kind() const = 0;
+  bool periodic() const { return kind() == SubstrateKind::periodic; }
+  virtual MeanStiffness mean_stiffness() const = 0;
+  // "periodic half-space", "periodic elastic layer", "free half-space".
+  virtual const char *name() const = 0;
   virtual const Grid &grid() const = 0;
   virtual double contact_modulus() const = 0;
 
@@ -43,7 +57,7 @@ class Substrate {
   virtual std::int64_t surface_size() const = 0;
   // Whether that surface reaches beyond the grid (a free substrate's does): the same on every
   // process of a distributed grid, also on one whose part of the surface is empty.
-  bool surface_beyond_grid() const { return kind() == SubstrateKind::free; }
+  bool surface_beyond_grid() const { return !periodic(); }
   virtual void surface_forward(const double *surface_field, Complex *spectrum) const = 0;
   virtual void surface_backward(Complex *spectrum, double *surface_field) const = 0;
 
@@ -58,10 +72,11 @@ class Substrate {
   // measure and sets the units of a solve (each substrate says which scale it uses).
   virtual double pixel_stiffness() const = 0;
 
-  // The mean (q = 0) displacement mode. A periodic substrate has no stiffness there of its
+  // The mean (q = 0) displacement mode. A periodic half-space has no stiffness there of its
   // own: K~(0) is a convention that links mean pressure and mean displacement, and the user
-  // may set it (asp_system_set_k0). A free substrate's mean displacement follows from its
-  // elasticity, with nothing to choose: has_k0() is false and k0() and set_k0() throw
+  // may set it (asp_system_set_k0). A layer on a rigid base has its own, M/t: k0() gives it
+  // and set_k0() throws Error(unsupported). A free substrate's mean displacement follows from
+  // its elasticity, with nothing to choose: has_k0() is false and k0() and set_k0() throw
   // Error(unsupported).
   virtual bool has_k0() const = 0;
   virtual double k0() const = 0;

@@ -38,6 +38,16 @@ System::System(std::shared_ptr<const Grid> grid, double contact_modulus, Substra
   reset_state();
 }
 
+System::System(std::shared_ptr<const Grid> grid, std::unique_ptr<const StiffnessLaw> law)
+    : grid_(std::move(grid)),
+      heights_(grid_->make_field()),
+      state_{grid_->make_field(), grid_->make_field(), 0.0},
+      substrate_(std::make_unique<PeriodicHalfSpace>(*grid_, std::move(law))),
+      interaction_(new HardWall()) {
+  last_reference_pressure_ = reference_pressure(0.0);
+  reset_state();
+}
+
 void System::set_topography(const double *heights) {
   const std::int64_t n = grid_->local_pixels();
   const Reductions &reduce = grid_->reductions();
@@ -48,9 +58,8 @@ void System::set_topography(const double *heights) {
                 "array 'heights' spans " + format_number(bottom) + " to " + format_number(top) +
                     "; the range max - min must be a finite double");
   // A free substrate's heights need not be periodic: their slope is taken inside the box.
-  const double rms_slope = substrate_->kind() == SubstrateKind::free
-                               ? rms_slope_within_box(*grid_, heights)
-                               : surface_statistics(*grid_, heights).rms_slope;
+  const double rms_slope = !substrate_->periodic() ? rms_slope_within_box(*grid_, heights)
+                                                   : surface_statistics(*grid_, heights).rms_slope;
   const double slope_pressure = 0.5 * substrate_->contact_modulus() * rms_slope;
   if (!std::isfinite(slope_pressure))
     throw Error(Status::invalid_argument,
@@ -222,7 +231,8 @@ void System::set_potential(InteractionKind kind, std::unique_ptr<Potential> pote
 }
 
 void System::set_k0(double k0) {
-  if (!substrate_->has_k0()) substrate_->set_k0(k0);  // refuses, naming the substrate
+  // Refuses, naming the substrate, where K~(0) is no convention to set.
+  if (substrate_->mean_stiffness() != MeanStiffness::convention) substrate_->set_k0(k0);
   require_positive(k0, "k0");
   const double p_mean = mean_pressure();
   const double shift = p_mean / k0 - p_mean / substrate_->k0();

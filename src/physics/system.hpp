@@ -9,6 +9,7 @@
 #include "core/aligned_field.hpp"
 #include "core/grid.hpp"
 #include "physics/interaction.hpp"
+#include "physics/stiffness_law.hpp"
 #include "physics/substrate.hpp"
 
 namespace asp {
@@ -33,6 +34,9 @@ class System {
   // grid, which therefore outlives every system made on it.
   System(std::shared_ptr<const Grid> grid, double contact_modulus,
          SubstrateKind substrate = SubstrateKind::periodic);
+  // A periodic substrate with the given stiffness law (a layer on a rigid base, ...), not
+  // null; otherwise as above.
+  System(std::shared_ptr<const Grid> grid, std::unique_ptr<const StiffnessLaw> law);
 
   const Grid &grid() const { return *grid_; }
   const Substrate &substrate() const { return *substrate_; }
@@ -65,7 +69,8 @@ class System {
 
   // Changes K~(0) keeping the pressure and the gap: only the rigid-body penetration moves, by
   // pbar (1/K~(0)new - 1/K~(0)old), so that the state stays an equilibrium. Throws
-  // Error(unsupported) naming 'system' on a substrate without K~(0) (the free half-space).
+  // Error(unsupported) on a substrate whose K~(0) is no convention: the free half-space has
+  // none, a layer on a rigid base has its own.
   void set_k0(double k0);
 
   // Copies the heights (finite, with a finite range max - min) and resets the state.

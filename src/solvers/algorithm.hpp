@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// What an algorithm is to the registry: its name, what it serves (controls, substrates,
-// interactions), its options with defaults and ranges, and how to run it. Each algorithm's
-// file describes itself with one of these; the registry lists them.
+// What an algorithm is to the registry: its name, what it serves (controls, and what it needs
+// of substrates and interactions), its options with defaults and ranges, and how to run it.
+// Each algorithm's file describes itself with one of these; the registry lists them.
 #pragma once
 
 #include <map>
@@ -36,29 +36,38 @@ struct OptionValues {
 };
 
 // What an algorithm serves with given option values, and which values those are (for the
-// refusal's message, e.g. "variable = gap").
+// refusal's message, e.g. "variable = gap"), in terms of what substrates and interactions can
+// do rather than which ones they are: a new substrate or potential with the same capabilities
+// is taken without a change here.
 struct Offer {
   std::vector<Control> controls;
-  std::vector<SubstrateKind> substrates;
-  std::vector<InteractionKind> interactions;
+  // Whether it needs a periodic substrate (its operator diagonal on the grid's own spectrum):
+  // any periodic one (half-space, layer, ...) is then taken, a free one is not.
+  bool periodic_only = false;
+  // The interaction families it handles, and whether it takes a user's callback potential in
+  // those that have a potential.
+  std::vector<InteractionFamily> interactions;
+  bool callbacks = false;
   std::string condition;
-  // The controls offered on a free substrate when fewer than `controls` (empty: all of
-  // them), and why the others are not.
+  // The controls offered on a substrate that is not periodic when fewer than `controls`
+  // (empty: all of them), and why the others are not.
   std::vector<Control> free_controls;
   std::string free_reason;
-  // The interactions taken under mean-pressure control when fewer than `interactions`
-  // (empty: all of them), and why the others are not.
-  std::vector<InteractionKind> load_interactions;
+  // The families (and callbacks or not) taken under mean-pressure control when fewer than
+  // above (empty: the same), and why the others are not.
+  std::vector<InteractionFamily> load_interactions;
+  bool load_callbacks = false;
   std::string load_reason;
 };
 
 struct AlgorithmSpec {
   std::string name;
   std::string summary;
-  // What it serves with some option values (for describe()).
+  // What it serves with some option values (for describe()), as in Offer.
   std::vector<Control> controls;
-  std::vector<SubstrateKind> substrates;
-  std::vector<InteractionKind> interactions;
+  bool periodic_only = false;
+  std::vector<InteractionFamily> interactions;
+  bool callbacks = false;
   // As in Offer: the controls on a free substrate when fewer, and why.
   std::vector<Control> free_controls;
   std::string free_reason;

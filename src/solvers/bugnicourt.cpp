@@ -262,26 +262,31 @@ bool on_the_gap(const OptionValues &options) { return options.text("variable") =
 
 // On a free substrate the gap formulation takes penetration and load control.
 constexpr const char *mean_gap_on_free =
-    "mean-gap control of the gap formulation is offered on a periodic half-space only; on a "
+    "mean-gap control of the gap formulation is offered on a periodic substrate only; on a "
     "free one the mean displacement is not a free mode whose energy can be left out";
 
 Offer offer_for(const OptionValues &options) {
   if (on_the_gap(options))
+    // The separable step knows the exponential adhesion, not a user's callback.
     return {{Control::mean_gap, Control::penetration, Control::mean_pressure},
-            {SubstrateKind::periodic, SubstrateKind::free},
-            {InteractionKind::hard_wall, InteractionKind::adhesive_hard_wall},
+            false,
+            {InteractionFamily::hard_wall, InteractionFamily::hard_wall_with_potential},
+            false,
             "variable = gap",
             {Control::penetration, Control::mean_pressure},
             mean_gap_on_free,
             {},
+            false,
             ""};
   return {{Control::mean_pressure, Control::penetration},
-          {SubstrateKind::periodic, SubstrateKind::free},
-          {InteractionKind::hard_wall},
+          false,
+          {InteractionFamily::hard_wall},
+          false,
           "variable = pressure",
           {},
           "",
           {},
+          false,
           ""};
 }
 
@@ -330,8 +335,7 @@ AlgorithmSpec bugnicourt_algorithm() {
       "energy; with or without adhesion)";
   spec.controls = {Control::mean_pressure, Control::mean_gap, Control::penetration};
   spec.offer_for = offer_for;
-  spec.substrates = {SubstrateKind::periodic, SubstrateKind::free};
-  spec.interactions = {InteractionKind::hard_wall, InteractionKind::adhesive_hard_wall};
+  spec.interactions = {InteractionFamily::hard_wall, InteractionFamily::hard_wall_with_potential};
   spec.options = {{"variable", OptionType::choice, 0.0, 0.0, 0.0, false, {"pressure", "gap"},
                    "the unknown: pressure (the dual problem; mean-pressure or penetration "
                    "control; no adhesion) or gap (the primal; mean-pressure, mean-gap or "

@@ -451,21 +451,24 @@ constexpr const char *load_with_potential =
 Offer offer_for(const OptionValues &options) {
   if (on_the_gap(options))
     return {{Control::penetration, Control::mean_pressure},
-            {SubstrateKind::periodic, SubstrateKind::free},
-            {InteractionKind::hard_wall, InteractionKind::adhesive_hard_wall,
-             InteractionKind::user_potential_hard_wall},
+            false,
+            {InteractionFamily::hard_wall, InteractionFamily::hard_wall_with_potential},
+            true,
             "variable = gap",
             {},
             "",
-            {InteractionKind::hard_wall, InteractionKind::adhesive_hard_wall},
+            {InteractionFamily::hard_wall, InteractionFamily::hard_wall_with_potential},
+            false,
             load_with_potential};
   return {{Control::penetration},
-          {SubstrateKind::periodic, SubstrateKind::free},
-          {InteractionKind::hard_wall},
+          false,
+          {InteractionFamily::hard_wall},
+          false,
           "variable = pressure",
           {},
           "",
           {},
+          false,
           ""};
 }
 
@@ -505,9 +508,8 @@ AlgorithmSpec lbfgsb_algorithm() {
       "under load control";
   spec.controls = {Control::penetration, Control::mean_pressure};
   spec.offer_for = offer_for;
-  spec.substrates = {SubstrateKind::periodic, SubstrateKind::free};
-  spec.interactions = {InteractionKind::hard_wall, InteractionKind::adhesive_hard_wall,
-                       InteractionKind::user_potential_hard_wall};
+  spec.interactions = {InteractionFamily::hard_wall, InteractionFamily::hard_wall_with_potential};
+  spec.callbacks = true;
   spec.options = {
       {"variable", OptionType::choice, 0.0, 0.0, 0.0, false, {"pressure", "gap"},
        "the unknown: pressure (the dual problem; no adhesion) or gap (the primal; with or "

@@ -71,8 +71,7 @@ AlgorithmSpec polonsky_keer_algorithm() {
       "3.1.1, Alg. 3); the objective is the complementary energy, minus the elastic energy "
       "(q = 0 term included) at the solution";
   spec.controls = {Control::mean_pressure, Control::penetration};
-  spec.substrates = {SubstrateKind::periodic, SubstrateKind::free};
-  spec.interactions = {InteractionKind::hard_wall};
+  spec.interactions = {InteractionFamily::hard_wall};
   spec.options = {{"preconditioner", OptionType::choice, 0.0, 0.0, 0.0, false,
                    {"auto", "fourier", "none"},
                    "fourier: preconditioned by the substrate's stiffness (E*|q|/2 on a "

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "core/checks.hpp"
 #include "core/error.hpp"
 #include "solvers/bugnicourt.hpp"
 #include "solvers/lbfgsb.hpp"
@@ -71,13 +72,41 @@ const AlgorithmSpec &find_algorithm(const std::string &name) {
                   ")");
 }
 
+namespace {
+// The interactions an offer handles, as text: "non-adhesive hard wall, hard wall with a
+// potential (not a user's callback)".
+std::string handled(const std::vector<InteractionFamily> &families, bool callbacks) {
+  std::string text = names(families, family_name);
+  const bool with_potential =
+      std::find_if(families.begin(), families.end(), [](InteractionFamily f) {
+        return f != InteractionFamily::hard_wall;
+      }) != families.end();
+  if (with_potential && !callbacks) text += " (not a user's callback)";
+  return text;
+}
+
+bool takes(const std::vector<InteractionFamily> &families, bool callbacks,
+           const Interaction &interaction) {
+  return std::find(families.begin(), families.end(), interaction.family()) != families.end() &&
+         (callbacks || !interaction.potential_from_callback());
+}
+
+constexpr const char *periodic_substrates = "periodic substrates (half-space, elastic layer)";
+}  // namespace
+
 void check_request(const AlgorithmSpec &algorithm, const OptionValues &options,
-                   const System &system, Control control) {
-  const Offer offer = algorithm.offer_for != nullptr
-                          ? algorithm.offer_for(options)
-                          : Offer{algorithm.controls, algorithm.substrates,
-                                  algorithm.interactions, "", algorithm.free_controls,
-                                  algorithm.free_reason, {}, ""};
+                   const System &system, Control control, const double *value) {
+  Offer offer;
+  if (algorithm.offer_for != nullptr) {
+    offer = algorithm.offer_for(options);
+  } else {
+    offer.controls = algorithm.controls;
+    offer.periodic_only = algorithm.periodic_only;
+    offer.interactions = algorithm.interactions;
+    offer.callbacks = algorithm.callbacks;
+    offer.free_controls = algorithm.free_controls;
+    offer.free_reason = algorithm.free_reason;
+  }
   const std::string solver =
       "solver '" + algorithm.name + "'" +
       (offer.condition.empty() ? "" : " with " + offer.condition);
@@ -85,41 +114,53 @@ void check_request(const AlgorithmSpec &algorithm, const OptionValues &options,
   if (std::find(c.begin(), c.end(), control) == c.end())
     throw Error(Status::unsupported, solver + " does not offer " + control_name(control) +
                                          " control (it offers: " + names(c, control_name) + ")");
-  const auto &s = offer.substrates;
-  if (std::find(s.begin(), s.end(), system.substrate().kind()) == s.end())
-    throw Error(Status::unsupported, solver + " does not work on a " +
-                                         substrate_name(system.substrate().kind()) +
-                                         " (it works on: " + names(s, substrate_name) + ")");
+  const Substrate &substrate = system.substrate();
+  if (offer.periodic_only && !substrate.periodic())
+    throw Error(Status::unsupported, solver + " does not work on a " + substrate.name() +
+                                         " (it works on " + periodic_substrates + " only)");
   const auto &f = offer.free_controls;
-  if (system.substrate().kind() == SubstrateKind::free && !f.empty() &&
-      std::find(f.begin(), f.end(), control) == f.end())
+  if (!substrate.periodic() && !f.empty() && std::find(f.begin(), f.end(), control) == f.end())
     throw Error(Status::unsupported, solver + " does not offer " + control_name(control) +
-                                         " control on a free half-space (it offers there: " +
-                                         names(f, control_name) + "): " + offer.free_reason);
-  const auto &i = offer.interactions;
-  const std::string interaction = interaction_name(system.interaction().kind());
-  const bool vowel = interaction.find_first_of("aeio") == 0;  // "a user potential"
-  if (std::find(i.begin(), i.end(), system.interaction().kind()) == i.end())
+                                         " control on a " + substrate.name() +
+                                         " (it offers there: " + names(f, control_name) +
+                                         "): " + offer.free_reason);
+  const Interaction &interaction = system.interaction();
+  const std::string name = interaction_name(interaction.kind());
+  const bool vowel = name.find_first_of("aeio") == 0;  // "a user potential"
+  if (!takes(offer.interactions, offer.callbacks, interaction))
     throw Error(Status::unsupported, solver + " does not handle " + (vowel ? "an " : "a ") +
-                                         interaction +
-                                         " (it handles: " + names(i, interaction_name) + ")");
-  const auto &l = offer.load_interactions;
-  if (control == Control::mean_pressure && !l.empty() &&
-      std::find(l.begin(), l.end(), system.interaction().kind()) == l.end())
-    throw Error(Status::unsupported, solver + " does not offer mean_pressure control with " +
-                                         (vowel ? "an " : "a ") + interaction +
-                                         " (it offers it with: " + names(l, interaction_name) +
-                                         "): " + offer.load_reason);
+                                         name + " (it handles: " +
+                                         handled(offer.interactions, offer.callbacks) + ")");
+  if (control == Control::mean_pressure && !offer.load_interactions.empty() &&
+      !takes(offer.load_interactions, offer.load_callbacks, interaction))
+    throw Error(Status::unsupported,
+                solver + " does not offer mean_pressure control with " +
+                    (vowel ? "an " : "a ") + name + " (it offers it with: " +
+                    handled(offer.load_interactions, offer.load_callbacks) +
+                    "): " + offer.load_reason);
+
+  // The value, where the request has one: the same for every algorithm.
+  if (value == nullptr) return;
+  require_finite(*value, "value");
+  if (control == Control::mean_pressure && *value < 0.0 &&
+      interaction.family() == InteractionFamily::hard_wall)
+    throw Error(Status::invalid_argument,
+                "argument 'value' is " + format_number(*value) +
+                    ": a non-adhesive hard wall cannot carry a negative mean pressure");
+  if (control == Control::mean_gap && *value < 0.0)
+    throw Error(Status::invalid_argument, "argument 'value' is " + format_number(*value) +
+                                              ": a mean gap cannot be negative");
 }
 
 std::string describe(const AlgorithmSpec &algorithm) {
   std::string text = algorithm.name + ": " + algorithm.summary + "\n";
   text += "controls: " + names(algorithm.controls, control_name) + "\n";
-  text += "substrates: " + names(algorithm.substrates, substrate_name) + "\n";
-  if (!algorithm.free_controls.empty())
+  text += std::string("substrates: ") + periodic_substrates +
+          (algorithm.periodic_only ? " only" : "; free half-space") + "\n";
+  if (!algorithm.free_controls.empty() && !algorithm.periodic_only)
     text += "controls on a free half-space: " + names(algorithm.free_controls, control_name) +
             " (" + algorithm.free_reason + ")\n";
-  text += "interactions: " + names(algorithm.interactions, interaction_name) + "\n";
+  text += "interactions: " + handled(algorithm.interactions, algorithm.callbacks) + "\n";
   text += "options:\n";
   for (const OptionSpec &o : algorithm.options) {
     text += "  " + o.name;

@@ -130,16 +130,7 @@ void Solver::forget_last_solve() {
 
 void Solver::solve(System &system, Control control, double value) {
   forget_last_solve();
-  check_supported(system, control);
-  require_finite(value, "value");
-  if (control == Control::mean_pressure && value < 0.0 &&
-      system.interaction().kind() == InteractionKind::hard_wall)
-    throw Error(Status::invalid_argument,
-                "argument 'value' is " + format_number(value) +
-                    ": a non-adhesive hard wall cannot carry a negative mean pressure");
-  if (control == Control::mean_gap && value < 0.0)
-    throw Error(Status::invalid_argument, "argument 'value' is " + format_number(value) +
-                                              ": a mean gap cannot be negative");
+  check_request(algorithm_, options_, system, control, &value);
 
   MonitorSettings settings;
   settings.tolerance = options_.number("tolerance");
@@ -158,9 +149,7 @@ void Solver::solve(System &system, Control control, double value) {
   // Any other error after a formulation began to work on the state in place (memory running
   // out for a solver's arrays or a quasi-Newton pair) resets the state, as a breakdown does,
   // rather than leave it in the solve's units.
-  const InteractionKind kind = system.interaction().kind();
-  const bool keep_start =
-      kind == InteractionKind::user_potential || kind == InteractionKind::user_potential_hard_wall;
+  const bool keep_start = system.interaction().potential_from_callback();
   ContactState start;
   if (keep_start) start = system.state();
   try {

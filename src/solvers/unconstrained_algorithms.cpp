@@ -13,8 +13,6 @@
 namespace asp {
 namespace {
 
-const std::vector<InteractionKind> soft_interactions = {
-    InteractionKind::soft_wall, InteractionKind::lennard_jones, InteractionKind::user_potential};
 const std::vector<Control> soft_controls = {Control::penetration, Control::mean_pressure};
 
 // Options shared by the algorithms of one family.
@@ -92,14 +90,13 @@ AlgorithmSpec soft_spec(const char *name, const char *summary, bool periodic_onl
   spec.name = name;
   spec.summary = summary;
   spec.controls = soft_controls;
-  spec.substrates = periodic_only
-                        ? std::vector<SubstrateKind>{SubstrateKind::periodic}
-                        : std::vector<SubstrateKind>{SubstrateKind::periodic, SubstrateKind::free};
-  spec.interactions = soft_interactions;
+  spec.periodic_only = periodic_only;
+  spec.interactions = {InteractionFamily::soft_potential};
+  spec.callbacks = true;
   spec.free_controls = {Control::penetration};
   spec.free_reason =
       "mean-pressure control of an unconstrained formulation is offered on a periodic "
-      "half-space only; on a free one the rigid-body penetration is not a free mode of the "
+      "substrate only; on a free one the rigid-body penetration is not a free mode of the "
       "displacement through which the mean pressure could be imposed";
   spec.options = std::move(options);
   spec.run = run;
@@ -113,7 +110,7 @@ AlgorithmSpec lbfgs_algorithm() {
       "lbfgs",
       "limited-memory BFGS (Nocedal 1980) with a strong Wolfe line search on the displacement: "
       "the unconstrained problem of a soft potential (thesis sections 2.2.1 and 3.1.6); "
-      "mean-pressure control on a periodic half-space only",
+      "mean-pressure control on a periodic substrate only",
       false, {memory_option()}, run_lbfgs<DisplacementFormulation>);
 }
 

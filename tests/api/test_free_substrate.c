@@ -77,7 +77,7 @@ int main(void) {
   CHECK_OK(asp_solver_create("bugnicourt", &gap));
   CHECK_OK(asp_solver_set_option_string(gap, "variable", "gap"));
   CHECK_ERROR(asp_solver_solve(gap, system, ASP_CONTROL_MEAN_GAP, 1e-4), ASP_ERR_UNSUPPORTED,
-              "periodic half-space only");
+              "periodic substrate only");
   CHECK_MESSAGE_HAS("free half-space");
   CHECK_OK(asp_system_get_field(system, ASP_FIELD_PRESSURE, q, n * n));
   CHECK(memcmp(p, q, sizeof(double) * n * n) == 0);

@@ -222,6 +222,25 @@ fi
 # stderr is a file here: no progress line, and nothing else either.
 expect "no progress line when stderr is not a terminal" [ ! -s "$err" ]
 
+# An elastic layer on a rigid base (substrate.type = "layer"). Twenty box lengths thick it is
+# the half-space to the last digit (K~ differs by (qt)^2 exp(-2qt), qt >= 40 pi): under load
+# control, which does not involve K~(0), both give the same contact to the solve's tolerance.
+run run "$small" --no-plots --tolerance 1e-11 --output halfspace-run
+grep "^contact fraction" "$out" > halfspace-contact
+run run "$small" --no-plots --tolerance 1e-11 --output thick-layer-run --set substrate.type=layer \
+  --set substrate.thickness=20.0 --set substrate.poisson_ratio=0.3
+expect "a layer solve exits 0 (stderr: $(cat "$err"))" [ "$rc" -eq 0 ]
+expect "the report names the layer" has "^substrate +periodic elastic layer on a rigid base, E\* = 1, thickness 20, Poisson's ratio 0.3" "$out"
+expect "a thick layer has the half-space's contact" \
+  [ "$(grep "^contact fraction" "$out")" = "$(cat halfspace-contact)" ]
+bad "substrate.thickness" "missing" run "$small" --set substrate.type=layer \
+  --set substrate.poisson_ratio=0.3
+bad "substrate.poisson_ratio" "below 0.5" run "$small" --set substrate.type=layer \
+  --set substrate.thickness=0.1 --set substrate.poisson_ratio=0.5
+bad "substrate.k0" "its own" run "$small" --set substrate.type=layer \
+  --set substrate.thickness=0.1 --set substrate.poisson_ratio=0.3 --set substrate.k0=2.0
+bad "substrate.thickness" "layer" run "$small" --set substrate.thickness=0.1
+
 # Pictures off, or no gnuplot: the run still succeeds and says why there is no PNG.
 ASPERITY_GNUPLOT= "$cli" run "$small" --output no-pictures > "$out" 2> "$err" < /dev/null
 rc=$?

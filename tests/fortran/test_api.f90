@@ -119,7 +119,7 @@ program test_api
       'lbfgs_fourier', 'gfmd', 'fire', 'fire_mass_weighted']
 
   type(c_ptr) :: grid, system, solver, no_solver, adhesive_solver, free_system, line, no_system, &
-                 lbfgsb, soft_solver
+                 lbfgsb, soft_solver, layer_system
   type(progress_counter), target :: counter
   type(soft_wall), target :: wall
   real(c_double), allocatable :: heights(:, :), pressure(:, :), column(:)
@@ -703,6 +703,33 @@ program test_api
               'the message names the grid: ' // asp_last_error_text())
   call asp_grid_destroy(line)
   call asp_system_destroy(free_system)
+
+  ! ---- an elastic layer on a rigid base: its own K~(0) = M/t, which cannot be set ----
+  ! E* = 1, nu = 0.3, t = 0.1: M = E* (1 - nu^2)(1 - nu)/((1 + nu)(1 - 2 nu)) = 1.225.
+  call expect_status(asp_system_create_layer(grid, modulus, 0.3d0, 0.1d0, layer_system), &
+                     ASP_OK, 'asp_system_create_layer')
+  call expect_status(asp_system_get(layer_system, ASP_K0, scalar), ASP_OK, &
+                     'asp_system_get(K0) of a layer')
+  call expect(abs(scalar - 12.25d0) < 1d-12 * 12.25d0, 'the layer''s K~(0) is M/t')
+  call expect_status(asp_system_set_k0(layer_system, 1d0), ASP_ERR_UNSUPPORTED, &
+                     'asp_system_set_k0 on a layer')
+  call expect(index(asp_last_error_text(), 'elastic layer') > 0, &
+              'the message says why: ' // asp_last_error_text())
+  call expect_status(asp_system_set_topography(layer_system, heights, n * n), ASP_OK, &
+                     'asp_system_set_topography on a layer')
+  call expect_status(asp_solver_solve(solver, layer_system, ASP_CONTROL_MEAN_PRESSURE, &
+                     mean_pressure), ASP_OK, 'pk on a layer')
+  call expect_status(asp_solver_converged(solver, converged), ASP_OK, 'asp_solver_converged')
+  call expect(converged == 1, 'pk converges on a layer')
+  call expect_status(asp_system_get(layer_system, ASP_MEAN_PRESSURE, scalar), ASP_OK, &
+                     'asp_system_get(MEAN_PRESSURE) of a layer')
+  call expect(abs(scalar - mean_pressure) < 1d-9 * mean_pressure, 'the layer carries the load')
+  call asp_system_destroy(layer_system)
+  call expect_status(asp_system_create_layer(grid, modulus, 0.5d0, 0.1d0, layer_system), &
+                     ASP_ERR_INVALID_ARGUMENT, 'asp_system_create_layer with nu = 0.5')
+  call expect(.not. c_associated(layer_system), 'a refused layer is NULL')
+  call expect(index(asp_last_error_text(), "'poisson_ratio'") > 0, &
+              'the message names the argument: ' // asp_last_error_text())
 
   call asp_solver_destroy(solver)
   call asp_system_destroy(system)

@@ -139,6 +139,39 @@ class GridAndSystem(unittest.TestCase):
         with self.assertRaises(asperity.InvalidArgumentError):
             system.get("no_such_thing")
 
+    def test_layer_substrate(self):
+        # An elastic layer on a rigid base: K~(0) = M/t its own (read, not set), and one
+        # wavevector pressed into full contact carries p = K~(0)(delta - h0) + K~(q) h, with
+        # the layer's closed form of K~(q) (Carbone & Mangialardi 2008): exact per mode, to
+        # the solve's tolerance (1e-12 of the reference pressure; checked to 1e-9).
+        e_star, nu, t, l, h0 = 2.0, 0.25, 0.15, 1.0, 1e-3
+        grid = asperity.Grid(64, l)
+        layer = asperity.System(grid, e_star, substrate="layer", thickness=t, poisson_ratio=nu)
+        self.assertEqual(layer.substrate, "layer")
+        self.assertIn("thickness=0.15", repr(layer))
+        m = e_star * (1 - nu * nu) * (1 - nu) / ((1 + nu) * (1 - 2 * nu))
+        k0 = m / t
+        self.assertAlmostEqual(layer.k0 / k0, 1.0, delta=1e-14)
+        with self.assertRaises(asperity.UnsupportedError):
+            layer.set_k0(1.0)
+        q = 2 * np.pi / l
+        s, kappa = q * t, 3 - 4 * nu
+        kq = 0.5 * e_star * q * (kappa * np.cosh(2 * s) + 2 * s * s + 0.5 * (1 + kappa ** 2)) / (
+            kappa * np.sinh(2 * s) - 2 * s)
+        h = h0 * np.cos(q * l * np.arange(64) / 64)
+        layer.topography = h
+        delta = h0 + 2 * kq * h0 / k0
+        report = asperity.Solver("pk", tolerance=1e-12).solve(layer, "penetration", delta)
+        self.assertTrue(report.converged)
+        expected = k0 * (delta - h0) + kq * h
+        self.assertLess(np.max(np.abs(layer.pressure - expected)), 1e-9 * k0 * (delta - h0))
+        with self.assertRaises(asperity.InvalidArgumentError):
+            asperity.System(grid, e_star, substrate="layer", thickness=t, poisson_ratio=0.5)
+        with self.assertRaises(ValueError):
+            asperity.System(grid, e_star, substrate="layer", thickness=t)
+        with self.assertRaises(ValueError):
+            asperity.System(grid, e_star, thickness=t)
+
     def test_free_substrate_and_interactions(self):
         grid = asperity.Grid(32, 32, 1.0, 1.0)
         free = asperity.System(grid, 1.0, substrate="free")

@@ -346,7 +346,7 @@ TEST(FreeHalfSpace, RefusesK0AndMeanGapControl) {
   asp::Solver gap("bugnicourt");
   gap.set_option("variable", std::string("gap"));
   expect_refusal([&] { gap.solve(system, asp::Control::mean_gap, 1e-3); },
-                 "periodic half-space only");
+                 "periodic substrate only");
 
   // Still usable: a warm solve at another load.
   EXPECT_TRUE(asp_test::solve_pk(system, asp::Control::mean_pressure, 2e-4).converged());

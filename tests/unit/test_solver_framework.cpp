@@ -182,6 +182,43 @@ TEST(Registry, RefusesAControlTheAlgorithmDoesNotServeBeforeTouchingTheSystem) {
   EXPECT_FALSE(solver.report().available);
 }
 
+// Every refusal before a solve is made by check_request: what the algorithm serves, and then,
+// when the request has a value, the value (asp_solver_supports asks without one).
+TEST(Registry, CheckRequestRefusesTheValueToo) {
+  auto grid = asp_test::grid_2d(8, 8, 1.0, 1.0);
+  asp::System system(grid, 1.0);
+  asp::OptionValues gap;
+  gap.texts["variable"] = "gap";
+  const asp::AlgorithmSpec &bugnicourt = asp::find_algorithm("bugnicourt");
+  const asp::AlgorithmSpec &pk = asp::find_algorithm("pk");
+  struct Case {
+    const asp::AlgorithmSpec &algorithm;
+    asp::Control control;
+    double value;
+    const char *why;
+  };
+  const Case refused[] = {
+      {bugnicourt, asp::Control::mean_gap, -1e-3, "a mean gap cannot be negative"},
+      {pk, asp::Control::mean_pressure, -1e-3, "cannot carry a negative mean pressure"},
+      {pk, asp::Control::penetration, std::nan(""), "'value'"},
+  };
+  for (const Case &c : refused) {
+    EXPECT_NO_THROW(asp::check_request(c.algorithm, gap, system, c.control, nullptr)) << c.why;
+    try {
+      asp::check_request(c.algorithm, gap, system, c.control, &c.value);
+      ADD_FAILURE() << c.why << ": accepted";
+    } catch (const asp::Error &e) {
+      EXPECT_EQ(e.status(), asp::Status::invalid_argument);
+      EXPECT_NE(std::string(e.what()).find(c.why), std::string::npos) << e.what();
+    }
+  }
+  // With adhesion a tensile mean pressure is a request like any other.
+  system.set_adhesion(1e-4, 1e-2);
+  const double tensile = -1e-3;
+  EXPECT_NO_THROW(
+      asp::check_request(bugnicourt, gap, system, asp::Control::mean_pressure, &tensile));
+}
+
 TEST(Registry, DescribesEveryOptionWithItsDefault) {
   const std::string text = asp::describe(asp::find_algorithm("pk"));
   for (const char *word : {"pk:", "mean_pressure", "penetration", "tolerance", "1e-08",

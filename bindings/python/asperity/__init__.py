@@ -7,8 +7,9 @@ package mirrors it:
 * :class:`Grid` -- ``Grid(nx, lx)`` (1D) or ``Grid(nx, ny, lx, ly)`` (2D); with MPI
   (asperity_mpi.h), ``Grid.mpi(comm, nx, ny, lx, ly)`` shares a 2D grid among the processes
   of an mpi4py communicator, each passing and receiving arrays of its own rows (``Grid.slab``);
-* :class:`System` -- ``System(grid, contact_modulus, substrate="periodic"|"free")``: the
-  topography, the interaction and the state (fields ``pressure``, ``gap``, ...);
+* :class:`System` -- ``System(grid, contact_modulus, substrate="periodic"|"free")``, or
+  ``substrate="layer", thickness=t, poisson_ratio=nu`` for an elastic layer on a rigid base:
+  the topography, the interaction and the state (fields ``pressure``, ``gap``, ...);
 * :class:`Solver` -- ``Solver("pk", tolerance=1e-10)``; ``solve(system, control, value)``
   returns a :class:`Report`;
 * :mod:`asperity.topography` -- generators and tools returning NumPy arrays (also exported

@@ -80,6 +80,7 @@ FUNCTIONS = {
     # system
     "asp_system_create": (_int, [_ptr, _dbl, _p_ptr]),
     "asp_system_create_free": (_int, [_ptr, _dbl, _p_ptr]),
+    "asp_system_create_layer": (_int, [_ptr, _dbl, _dbl, _dbl, _p_ptr]),
     "asp_system_destroy": (None, [_ptr]),
     "asp_system_set_topography": (_int, [_ptr, _ptr, _i64]),
     "asp_system_set_k0": (_int, [_ptr, _dbl]),

@@ -13,7 +13,7 @@ from .errors import NullPointerError
 
 __all__ = ["System"]
 
-_SUBSTRATES = ("periodic", "free")
+_SUBSTRATES = ("periodic", "free", "layer")
 
 #: What :meth:`System.check_resolution` says: the interaction's cohesive zone over the pixel
 #: size (0 when there is none, or none is known), whether the grid resolves it, and why.
@@ -23,8 +23,12 @@ Resolution = collections.namedtuple("Resolution", ["ratio", "resolved", "sentenc
 class System(OwnedHandle):
     """A contact problem on a grid: ``System(grid, contact_modulus, substrate="periodic")``.
 
-    ``substrate`` is "periodic" (asp_system_create) or "free" (asp_system_create_free: a
-    non-periodic half-space loaded only inside the box; 2D grids only). The system starts
+    ``substrate`` is "periodic" (asp_system_create), "free" (asp_system_create_free: a
+    non-periodic half-space loaded only inside the box; 2D grids only) or "layer"
+    (asp_system_create_layer: a periodic elastic layer of the given ``thickness`` and
+    ``poisson_ratio``, 0 <= nu < 0.5, bonded to a rigid base, whose K~(0) is its own,
+    ``System(grid, E_star, substrate="layer", thickness=t, poisson_ratio=nu)``; the two
+    keywords belong to the layer only). The system starts
     with zero pressure, the plain hard wall and no topography: a solve before
     :meth:`set_topography` (or assigning :attr:`topography`) raises InvalidStateError (for a
     flat surface, set zeros). A NaN or infinite height raises InvalidArgumentError naming its
@@ -44,17 +48,30 @@ class System(OwnedHandle):
     grid resolves them: :meth:`check_resolution`.
     """
 
-    def __init__(self, grid, contact_modulus, substrate="periodic"):
+    def __init__(self, grid, contact_modulus, substrate="periodic", thickness=None,
+                 poisson_ratio=None):
         if substrate not in _SUBSTRATES:
             raise ValueError("substrate must be one of %s, got %r" % (_SUBSTRATES, substrate))
-        function = "asp_system_create" if substrate == "periodic" else "asp_system_create_free"
         handle = ctypes.c_void_p()
-        check(getattr(lib, function)(grid.handle, float(contact_modulus), ctypes.byref(handle)),
-              function)
+        if substrate == "layer":
+            if thickness is None or poisson_ratio is None:
+                raise ValueError('substrate="layer" needs thickness and poisson_ratio')
+            function = "asp_system_create_layer"
+            status = lib.asp_system_create_layer(grid.handle, float(contact_modulus),
+                                                 float(poisson_ratio), float(thickness),
+                                                 ctypes.byref(handle))
+        else:
+            if thickness is not None or poisson_ratio is not None:
+                raise ValueError('thickness and poisson_ratio belong to substrate="layer" only')
+            function = "asp_system_create" if substrate == "periodic" else "asp_system_create_free"
+            status = getattr(lib, function)(grid.handle, float(contact_modulus),
+                                            ctypes.byref(handle))
+        check(status, function)
         self._handle = handle.value
         self._grid = grid
         self._substrate = substrate
         self._contact_modulus = float(contact_modulus)
+        self._layer = (float(thickness), float(poisson_ratio)) if substrate == "layer" else None
         self._potential = None  # the Potential wrapper while a Python potential is set
 
     _destroy = lib.asp_system_destroy
@@ -71,7 +88,7 @@ class System(OwnedHandle):
 
     @property
     def substrate(self):
-        """"periodic" or "free"."""
+        """"periodic", "free" or "layer"."""
         return self._substrate
 
     @property
@@ -235,6 +252,9 @@ class System(OwnedHandle):
         self.set_topography(heights)
 
     def __repr__(self):
+        if self._layer is not None:
+            return "System(%r, %r, substrate='layer', thickness=%r, poisson_ratio=%r)" % (
+                self._grid, self._contact_modulus, self._layer[0], self._layer[1])
         return "System(%r, %r, substrate=%r)" % (self._grid, self._contact_modulus,
                                                  self._substrate)
 
