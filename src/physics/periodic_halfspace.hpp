@@ -56,7 +56,6 @@ class PeriodicHalfSpace final : public Substrate {
 
  private:
   double stiffness_at(double q) const { return q > 0.0 ? 0.5 * modulus_ * q : k0_; }
-  void apply(const Field &kernel, const double *in, double *out) const;
 
   const Grid &grid_;
   SpectralLayout layout_;
