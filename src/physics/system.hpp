@@ -126,18 +126,16 @@ class System {
     double *g = state_.gap.data();
     const bool wall = interaction_->has_hard_wall();
     const double n = static_cast<double>(grid_->n_pixels());
-    const auto sums = loops::sums<2>(grid_->reductions(), grid_->local_pixels(),
-                                     [&](std::int64_t i, double *sum) {
-                                       const SolvedPixel s = pixel(i);
-                                       const double gi = s.gap;
-                                       p[i] = s.pressure;
-                                       g[i] = !wall ? gi
-                                              : s.on_wall ? 0.0
-                                              : gi > 0.0 || std::isnan(gi) ? gi
-                                                                            : off_the_wall;
-                                       sum[0] += g[i] / n;
-                                       sum[1] += 0.0 * (p[i] + gi);  // NaN if anything overflowed
-                                     });
+    const auto store = [&](std::int64_t i, double *sum) {
+      const SolvedPixel s = pixel(i);
+      const double gi = s.gap;
+      const double open = gi > 0.0 || std::isnan(gi) ? gi : off_the_wall;
+      p[i] = s.pressure;
+      g[i] = !wall ? gi : (s.on_wall ? 0.0 : open);
+      sum[0] += g[i] / n;
+      sum[1] += 0.0 * (p[i] + gi);  // NaN if anything overflowed
+    };
+    const auto sums = loops::sums<2>(grid_->reductions(), grid_->local_pixels(), store);
     const double delta = penetration(sums[0]);
     state_.penetration = delta;
     remember_reference_pressure(reference_pressure);
