@@ -30,13 +30,12 @@ double wavenumber(std::int64_t m, std::int64_t n, double length) {
   return 2 * pi * static_cast<double>(signed_m) / length;
 }
 
-// out_i = (1/N) sum_q multiplier(|q|) f^_q exp(i q.x_i), f^_q = sum_j f_j exp(-i q.x_j): a
-// Fourier multiplier applied by the DFT written out, O(N^2).
-template <class Multiplier>
-Vector apply_directly(const asp::Grid &grid, const Vector &f, Multiplier &&multiplier) {
+using Complexes = std::vector<std::complex<double>>;
+
+// The discrete Fourier transform written out, O(N^2): out_m = sum_j f_j exp(sign i q_m.x_j).
+Complexes dft(const asp::Grid &grid, const Complexes &f, double sign) {
   const std::int64_t nx = grid.nx(), ny = grid.ny();
-  const auto n = static_cast<std::size_t>(nx * ny);
-  std::vector<std::complex<double>> spectrum(n);
+  Complexes out(f.size());
   for (std::int64_t my = 0; my < ny; ++my)
     for (std::int64_t mx = 0; mx < nx; ++mx) {
       std::complex<double> sum = 0.0;
@@ -44,29 +43,35 @@ Vector apply_directly(const asp::Grid &grid, const Vector &f, Multiplier &&multi
         for (std::int64_t jx = 0; jx < nx; ++jx) {
           const double phase = 2 * pi * (static_cast<double>(mx * jx) / nx +
                                          static_cast<double>(my * jy) / ny);
-          sum += f[jx + nx * jy] * std::polar(1.0, -phase);
+          sum += f[jx + nx * jy] * std::polar(1.0, sign * phase);
         }
-      const double qx = wavenumber(mx, nx, grid.lx()), qy = wavenumber(my, ny, grid.ly());
-      spectrum[mx + nx * my] = sum * multiplier(std::sqrt(qx * qx + qy * qy));
-    }
-  Vector out(n);
-  for (std::int64_t iy = 0; iy < ny; ++iy)
-    for (std::int64_t ix = 0; ix < nx; ++ix) {
-      std::complex<double> sum = 0.0;
-      for (std::int64_t my = 0; my < ny; ++my)
-        for (std::int64_t mx = 0; mx < nx; ++mx) {
-          const double phase = 2 * pi * (static_cast<double>(mx * ix) / nx +
-                                         static_cast<double>(my * iy) / ny);
-          sum += spectrum[mx + nx * my] * std::polar(1.0, phase);
-        }
-      out[ix + nx * iy] = sum.real() / static_cast<double>(n);
+      out[mx + nx * my] = sum;
     }
   return out;
 }
 
-Vector some_field(std::size_t n) {
+// out = (1/N) sum_q multiplier(|q|) f^_q exp(i q.x), f^ the transform of f: a Fourier
+// multiplier applied directly.
+template <class Multiplier>
+Vector apply_directly(const asp::Grid &grid, const Vector &f, Multiplier &&multiplier) {
+  const std::int64_t nx = grid.nx(), ny = grid.ny();
+  Complexes spectrum = dft(grid, Complexes(f.begin(), f.end()), -1.0);
+  for (std::int64_t my = 0; my < ny; ++my)
+    for (std::int64_t mx = 0; mx < nx; ++mx) {
+      const double qx = wavenumber(mx, nx, grid.lx()), qy = wavenumber(my, ny, grid.ly());
+      spectrum[mx + nx * my] *= multiplier(std::sqrt(qx * qx + qy * qy));
+    }
+  const Complexes back = dft(grid, spectrum, 1.0);
+  Vector out(f.size());
+  for (std::size_t i = 0; i < f.size(); ++i)
+    out[i] = back[i].real() / static_cast<double>(f.size());
+  return out;
+}
+
+// Values without structure about `offset`, between offset - 1 and offset + 1.
+Vector some_field(std::size_t n, double offset = 0.5) {
   Vector f(n);
-  for (std::size_t i = 0; i < n; ++i) f[i] = std::cos(1.7 * i * i + 0.3) + 0.5;
+  for (std::size_t i = 0; i < n; ++i) f[i] = std::cos(1.7 * i * i + 0.3) + offset;
   return f;
 }
 
@@ -155,11 +160,7 @@ Scene make(asp::SubstrateKind kind = asp::SubstrateKind::periodic) {
 }
 
 // Values of either sign, some far below the bound.
-Vector mixed(std::size_t n) {
-  Vector x(n);
-  for (std::size_t i = 0; i < n; ++i) x[i] = std::sin(0.9 * i * i + 0.2) + 0.3;
-  return x;
-}
+Vector mixed(std::size_t n) { return some_field(n, 0.3); }
 
 // Under a mean constraint (the dual formulation under load control: x >= 0, mean of x =
 // target): x <- max(x, 0) scaled by target N / sum max(x, 0), the rule written out here; the
