@@ -18,12 +18,7 @@ DisplacementFormulation::DisplacementFormulation(System &system, Control control
   if (substrate_.surface_beyond_grid()) {
     // Outside the box, the displacement that the state's pressure makes there.
     Field surface(static_cast<std::size_t>(unknowns_));
-    substrate_.forward(state_.pressure.data(), spectrum_.data());
-    Complex *s = spectrum_.data();
-    const double *c = substrate_.normalised_compliance().data();
-    loops::for_each(static_cast<std::int64_t>(spectrum_.size()),
-                    [&](std::int64_t q) { s[q] *= c[q]; });
-    substrate_.surface_backward(spectrum_.data(), surface.data());
+    substrate_.compliance_onto_surface(state_.pressure.data(), surface.data(), spectrum_.data());
     counters_.transforms += 2;
     const double per_length = 1.0 / length_unit_;
     const double *outside = surface.data();
@@ -33,14 +28,10 @@ DisplacementFormulation::DisplacementFormulation(System &system, Control control
 }
 
 void DisplacementFormulation::apply_stiffness(const double *x, double *out) {
-  substrate_.surface_forward(x, spectrum_.data());
-  Complex *s = spectrum_.data();
-  const double *k = substrate_.normalised_stiffness().data();
-  const double factor = 1.0 / substrate_.pixel_stiffness();
-  loops::for_each(static_cast<std::int64_t>(spectrum_.size()),
-                  [&](std::int64_t q) { s[q] *= factor * k[q]; });
-  if (load_control() && substrate_.layout().is_mean(0)) s[0] = 0.0;
-  substrate_.surface_backward(spectrum_.data(), out);
+  // Scaled (over the pixel stiffness); without the q = 0 mode under mean-pressure control.
+  substrate_.apply_stiffness(x, out, spectrum_.data(),
+                             Substrate::KernelTimes{1.0 / substrate_.pixel_stiffness(),
+                                                    load_control()});
   counters_.transforms += 2;
 }
 

@@ -53,16 +53,15 @@ void DualFormulation::gap_of(const double *pressure, double pressure_scale, doub
   // one pass over the spectrum (H, the spectrum of the scaled heights, carries the 1/N).
   // It overwrites the direction's spectrum, which the next linear update would read.
   linear_update_ready_ = false;
-  substrate_.forward(pressure, spectrum_.data());
-  Complex *s = spectrum_.data();
   const Complex *hs = height_spectrum_.data();
-  const double *c = compliance_.data();
-  const double factor = pressure_scale * compliance_factor_;
-  loops::for_each(static_cast<std::int64_t>(spectrum_.size()),
-                  [&](std::int64_t k) { s[k] = factor * c[k] * s[k] - hs[k]; });
-  // A constant in every pixel after the unnormalised backward transform.
-  if (substrate_.layout().is_mean(0)) s[0] -= delta_;
-  substrate_.backward(spectrum_.data(), gap);
+  const double factor = pressure_scale * compliance_factor_, delta = delta_;
+  substrate_.apply_compliance(
+      pressure, gap, spectrum_.data(),
+      [&](Complex *s, const double *c, const SpectralLayout &layout) {
+        loops::for_each(layout.size(), [&](std::int64_t k) { s[k] = factor * c[k] * s[k] - hs[k]; });
+        // A constant in every pixel after the unnormalised backward transform.
+        if (layout.is_mean(0)) s[0] -= delta;
+      });
   counters_.transforms += 2;
   counters_.evaluations += 1;
 }
@@ -152,35 +151,22 @@ double DualFormulation::gradient_at_zero(double *out) {
 
 void DualFormulation::hessian_product(const double *direction, double *product) {
   linear_update_ready_ = false;  // the direction's spectrum is overwritten, as in gap_of
-  substrate_.forward(direction, spectrum_.data());
-  Complex *s = spectrum_.data();
-  const double *c = compliance_.data();
-  loops::for_each(static_cast<std::int64_t>(spectrum_.size()),
-                  [&](std::int64_t k) { s[k] *= compliance_factor_ * c[k]; });
-  substrate_.backward(spectrum_.data(), product);
+  substrate_.apply_compliance(direction, product, spectrum_.data(),
+                              Substrate::KernelTimes{compliance_factor_});
   counters_.transforms += 2;
 }
 
 double DualFormulation::quadratic_part_product(const double *direction, double *product) {
   linear_update_ready_ = false;  // the direction's spectrum is overwritten, as in gap_of
-  substrate_.forward(direction, spectrum_.data());
-  Complex *s = spectrum_.data();
-  const double *c = compliance_.data();
-  // d.K^-1 d = k sum over all modes of C|D_q|^2 (C the normalised compliance): the stored
-  // entries count twice but for the single ones, which are read before the pass overwrites
-  // them.
-  const auto energy = [&](std::int64_t q) { return c[q] * std::norm(s[q]); };
-  double singles = substrate_.layout().single_entries_sum(energy);
-  grid_.reductions().combine_sums(&singles, 1);
   const double factor = compliance_factor_;
-  const double all = loops::sums<1>(grid_.reductions(), static_cast<std::int64_t>(spectrum_.size()),
-                                    [&](std::int64_t q, double *sum) {
-                                      sum[0] += energy(q);
-                                      s[q] *= factor * c[q];
-                                    })[0];
-  substrate_.backward(spectrum_.data(), product);
+  double curvature = 0.0;
+  substrate_.apply_compliance(direction, product, spectrum_.data(),
+                              [&](Complex *s, const double *c, const SpectralLayout &layout) {
+                                curvature = kernel_times_summing(grid_.reductions(), layout, s,
+                                                                 c, factor);
+                              });
   counters_.transforms += 2;
-  return factor * (2.0 * all - singles);
+  return curvature;
 }
 
 double DualFormulation::error(const double *x, const double *gradient) const {
@@ -407,28 +393,20 @@ Field &DualFormulation::variable() {
 
 bool DualFormulation::finish() {
   if (!gap_is_current_) evaluate_gap(false);
-  // The arrays hold p/scale and g + shift (scaled): turn them into the physical state.
-  double *p = state_.pressure.data();
-  double *g = state_.gap.data();
+  // The arrays hold p/scale and g + shift (scaled): the physical state, with the active set
+  // p > 0 on the wall (System::store_solved_state gives its gap exactly 0 and the others a
+  // positive one). No ending leaves the surfaces interpenetrating.
+  const double *p = state_.pressure.data();
+  const double *g = state_.gap.data();
   const double pressure_factor = scale_ * pressure_unit_;
   const double shift = shift_, length = length_unit_;
-  // The gap stored is exactly 0 on the active set p > 0 (where the gap the pressure makes is
-  // the residual, at most the error) and > 0 elsewhere, so that the contact (g = 0) is the
-  // active set, decided by the projection of the pressure and never by the sign of a
-  // rounding residue: off the active set a gap <= 0 (a pixel that touches the wall with no
-  // pressure, to rounding, or that the iterate leaves interpenetrating, by at most the error
-  // at convergence) is stored as the smallest positive double. No ending leaves the surfaces
-  // interpenetrating.
-  constexpr double off_the_wall = std::numeric_limits<double>::denorm_min();
-  const double check = loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
-    p[i] *= pressure_factor;
-    const double gi = (g[i] - shift) * length;
-    g[i] = p[i] > 0.0 ? 0.0 : (gi > 0.0 || std::isnan(gi) ? gi : off_the_wall);
-    return 0.0 * (p[i] + gi);  // NaN if anything overflowed
-  });
-  state_.penetration = delta_ * length;
-  system_.remember_reference_pressure(pressure_unit_);
-  return check == 0.0 && std::isfinite(state_.penetration);
+  const double delta = delta_ * length;
+  return system_.store_solved_state(
+      [&](std::int64_t i) {
+        const double pi = p[i] * pressure_factor;
+        return SolvedPixel{pi, (g[i] - shift) * length, pi > 0.0};
+      },
+      [&](double) { return delta; }, pressure_unit_);
 }
 
 }  // namespace asp

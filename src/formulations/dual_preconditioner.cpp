@@ -61,16 +61,10 @@ double DualFormulation::update_preconditioned_direction(double beta) {
 }
 
 bool DualFormulation::precondition(double *z) {
-  // The scaled Hessian is k K^-1 (k the compliance factor); its inverse K/k is the normalised
-  // stiffness (which carries the transform's 1/N) over k.
+  // The scaled Hessian is k K^-1 (k the compliance factor); its inverse is K/k.
   linear_update_ready_ = false;  // the work spectrum is overwritten, as in hessian_product
-  substrate_.forward(z, spectrum_.data());
-  Complex *s = spectrum_.data();
-  const double *stiffness = substrate_.normalised_stiffness().data();
-  const double factor = 1.0 / compliance_factor_;
-  loops::for_each(static_cast<std::int64_t>(spectrum_.size()),
-                  [&](std::int64_t k) { s[k] *= factor * stiffness[k]; });
-  substrate_.backward(spectrum_.data(), z);
+  substrate_.grid_stiffness(z, z, spectrum_.data(),
+                            Substrate::KernelTimes{1.0 / compliance_factor_});
   counters_.transforms += 2;
   return true;
 }

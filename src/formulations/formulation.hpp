@@ -50,13 +50,6 @@ class Formulation {
   virtual bool quadratic() const { return true; }
   // The Hessian at the current iterate (variable()) times a direction.
   virtual void hessian_product(const double *direction, double *product) = 0;
-  // An upper bound on the curvature d.H(y)d over every point y of the line through the
-  // current iterate along d, given d and product = H d at the iterate: a curvature whose
-  // step -g.d/bound along d lowers the objective for certain (before bounds cut the step).
-  // For a quadratic objective it is d.H d.
-  virtual double curvature_bound(const double *direction, const double *product) const {
-    return dot(direction, product);
-  }
   // For a quadratic objective, f(x) = x.Hx/2 + c.x + f(0): writes c, the gradient at 0,
   // into out and returns f(0). A solver that keeps c can follow the gradient along a step
   // from Hessian products, g(s(x + a d)) = s (g(x) + a H d) + (1 - s) c, instead of
@@ -116,6 +109,16 @@ class Formulation {
   // example by rescaling, or by removing the gradient's mean over the free unknowns).
   virtual bool constrains_mean() const = 0;
   virtual double mean_target() const = 0;
+  // Restores the constraints on x (size() unknowns) after a step that left them: the bound,
+  // x_i <- max(x_i, lower_bound()) on the first bounded_size(); then, under a mean
+  // constraint, the mean of those unknowns, by scaling them with mean_target() total /
+  // sum x_i (which keeps the bound: every formulation with a mean constraint has the lower
+  // bound 0), or, where nothing is left above the bound, by setting them all to
+  // mean_target(). It is the rule of Bugnicourt's fused step (bugnicourt_passes.hpp); a
+  // projected solver calls it after each step. A feasible x changes at most by the rounding
+  // of that scale (by nothing without a mean constraint). Unknowns past
+  // bounded_size() are left as they are. Collective on a distributed grid.
+  void project(double *x) const;
   // The error measure of DESIGN.md section 2 at x with this gradient: the largest projected
   // force-balance residual, divided by the reference pressure. With bounds it is
   // bound_residual (bound_residual.hpp) with lower_bound() and, under a mean constraint,
@@ -153,8 +156,8 @@ class Formulation {
   }
 
   // Writes the iterate back into the system's state in physical units, with everything that
-  // follows from it (gap, penetration). Returns false if a physical value is not finite (the
-  // caller then resets the state).
+  // follows from it (gap, penetration), through System::store_solved_state. Returns false if
+  // a physical value is not finite (the caller then resets the state).
   virtual bool finish() = 0;
 
   const Counters &counters() const { return counters_; }

@@ -22,8 +22,10 @@ constexpr const char *mean_pressure_with_potential =
 
 PrimalFormulation::PrimalFormulation(System &system, Control control, double value)
     : ScaledFormulation(system, control, value),
-      stiffness_(system.substrate().normalised_stiffness()),
       local_term_(adhesion_) {
+  // The stiffness, made now: on a free substrate its making checks that it exists, before
+  // anything changes, and a solve then allocates nothing for it.
+  substrate_.normalised_stiffness();
   unknowns_ = substrate_.surface_size();
   if (control == Control::mean_gap && substrate_.surface_beyond_grid())
     throw Error(Status::unsupported,
@@ -61,12 +63,8 @@ PrimalFormulation::PrimalFormulation(System &system, Control control, double val
   // The stored gap as the starting iterate, in units of P/k; on a surface beyond the grid,
   // the displacement there that the stored pressure makes.
   if (substrate_.surface_beyond_grid()) {
-    substrate_.forward(state_.pressure.data(), spectrum_.data());
-    Complex *s = spectrum_.data();
-    const double *c = substrate_.normalised_compliance().data();
-    loops::for_each(static_cast<std::int64_t>(spectrum_.size()),
-                    [&](std::int64_t q) { s[q] *= c[q]; });
-    substrate_.surface_backward(spectrum_.data(), surface_unknowns_.data());
+    substrate_.compliance_onto_surface(state_.pressure.data(), surface_unknowns_.data(),
+                                       spectrum_.data());
     counters_.transforms += 2;
     double *outside = surface_unknowns_.data();
     const double per_length = 1.0 / length_unit_;
@@ -101,26 +99,19 @@ PrimalFormulation::PrimalFormulation(System &system, Control control, double val
 
 double PrimalFormulation::apply_stiffness(const double *field, double *out) {
   // K~/k with the transform's 1/N: the scaled stiffness, pixel stiffness 1. The q = 0 entry is
-  // the first: without K~(0) under mean-gap and load control.
-  substrate_.surface_forward(field, spectrum_.data());
-  Complex *s = spectrum_.data();
-  if (control_ != Control::penetration && substrate_.layout().is_mean(0)) s[0] = 0.0;
-  const double *k = stiffness_.data();
+  // the first: without K~(0) under mean-gap and load control, also in u.K u, summed in the
+  // same pass (Parseval).
+  const bool without_mean = control_ != Control::penetration;
   const double factor = 1.0 / substrate_.pixel_stiffness();
-  // u.K u = sum over all modes of the stiffness times |U_q|^2 (Parseval; the 1/N is in the
-  // normalised stiffness): the stored entries count twice but for the single ones, which
-  // are read before the pass overwrites them.
-  const auto energy = [&](std::int64_t q) { return k[q] * std::norm(s[q]); };
-  double singles = substrate_.layout().single_entries_sum(energy);
-  grid_.reductions().combine_sums(&singles, 1);
-  const double all = loops::sums<1>(grid_.reductions(), static_cast<std::int64_t>(spectrum_.size()),
-                                    [&](std::int64_t q, double *sum) {
-                                      sum[0] += energy(q);
-                                      s[q] *= factor * k[q];
-                                    })[0];
-  substrate_.surface_backward(spectrum_.data(), out);
+  double energy = 0.0;
+  substrate_.apply_stiffness(field, out, spectrum_.data(),
+                             [&](Complex *s, const double *k, const SpectralLayout &layout) {
+                               if (without_mean && layout.is_mean(0)) s[0] = 0.0;
+                               energy = kernel_times_summing(grid_.reductions(), layout, s, k,
+                                                             factor);
+                             });
   counters_.transforms += 2;
-  return factor * (2.0 * all - singles);
+  return energy;
 }
 
 double PrimalFormulation::elastic_pressure(const double *x, double *out) {
@@ -221,20 +212,6 @@ void PrimalFormulation::hessian_product(const double *direction, double *product
   const double *x = variable().data();
   const ExponentialPotential phi = adhesion_;
   loops::for_each(n_, [&](std::int64_t i) { product[i] += phi.d2phi(x[i]) * direction[i]; });
-}
-
-double PrimalFormulation::curvature_bound(const double *direction,
-                                          const double *product) const {
-  // A user's potential bounds nothing: its d.H d at the iterate (the solvers that need a
-  // bound, bugnicourt's, do not take it).
-  if (!adhesive_ || potential_ != nullptr) return dot(direction, product);
-  // phi'' < 0 everywhere, so the Hessian at any point is below K: d.K d bounds the
-  // curvature along the whole line, and is d.H d less the interaction's part at x.
-  const double *x = const_cast<PrimalFormulation *>(this)->variable().data();
-  const ExponentialPotential phi = adhesion_;
-  return dot(direction, product) - loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
-           return phi.d2phi(x[i]) * direction[i] * direction[i];
-         });
 }
 
 bool PrimalFormulation::separates(const double *x) const {
@@ -358,45 +335,36 @@ bool PrimalFormulation::finish() {
     p[i] = read * pressure;
     return p[i] / n;
   });
-  const auto sums = loops::sums<2>(grid_.reductions(), n_, [&](std::int64_t i, double *sum) {
-    const double gi = g[i] * length;
-    g[i] = gi > 0.0 || std::isnan(gi) ? gi : 0.0;  // -0.0 and a warm start's < 0 onto the wall
-    sum[0] += g[i] / n;
-    sum[1] += 0.0 * (p[i] + g[i]);  // NaN if anything overflowed
-  });
-  // Under mean-gap control the penetration follows from the convention mean u = pbar/K~(0):
-  // delta = pbar/K~(0) - mean g - mean(h - max h), with the mean of the gap stored.
+  // The penetration, from the state as stored (its mean gap, its pressure):
+  //  - under penetration control the one given;
+  //  - under mean-gap control from the convention mean u = pbar/K~(0):
+  //    delta = pbar/K~(0) - mean g - mean(h - max h);
+  //  - under load control the one the stored state says: the mean of u - (h - max h) - g
+  //    over the grid, u = K^-1 p the displacement of the stored pressure. On a periodic
+  //    substrate mean u = pbar/K~(0), so that it is the mean-gap formula; on a free one it
+  //    takes the padded operator (one FFT pair).
   const double top = max_height_;
-  const double mean_height = loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
-    return (heights_[i] - top) / n;
-  });
-  // Under load control the penetration is the one the stored state says: the mean of
-  // u - (h - max h) - g over the grid, u = K^-1 p the displacement of the stored pressure. On a
-  // periodic substrate mean u = pbar/K~(0), so that it is the mean-gap formula below; on a free
-  // one it takes the padded operator (one FFT pair).
-  double load_penetration = 0.0;
-  if (control_ == Control::mean_pressure && !substrate_.has_k0()) {
+  const auto penetration = [&](double mean_gap) {
+    if (control_ == Control::penetration) return penetration_ * length;
+    const double mean_height = loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
+      return (heights_[i] - top) / n;
+    });
+    if (substrate_.has_k0()) return mean_pressure / substrate_.k0() - mean_gap - mean_height;
     Field displacement = grid_.make_field();
     double *u = displacement.data();
-    substrate_.forward(p, spectrum_.data());
-    Complex *s = spectrum_.data();
-    const double *c = substrate_.normalised_compliance().data();
-    loops::for_each(static_cast<std::int64_t>(spectrum_.size()),
-                    [&](std::int64_t q) { s[q] *= c[q]; });
-    substrate_.backward(spectrum_.data(), u);
+    substrate_.apply_compliance(p, u, spectrum_.data());
     counters_.transforms += 2;
-    load_penetration = loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
+    return loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
       return (u[i] - (heights_[i] - top) - g[i]) / n;
     });
-  }
-  const bool from_mean_pressure =
-      control_ == Control::mean_gap || (control_ == Control::mean_pressure && substrate_.has_k0());
-  const double delta = from_mean_pressure ? mean_pressure / substrate_.k0() - sums[0] - mean_height
-                       : control_ == Control::mean_pressure ? load_penetration
-                                                            : penetration_ * length;
-  state_.penetration = delta;
-  system_.remember_reference_pressure(pressure_unit_);
-  return sums[1] == 0.0 && std::isfinite(delta);
+  };
+  // The gap stored is the iterate's (-0.0 and a warm start's < 0 onto the wall).
+  return system_.store_solved_state(
+      [&](std::int64_t i) {
+        const double gi = g[i] * length;
+        return SolvedPixel{p[i], gi, !(gi > 0.0 || std::isnan(gi))};
+      },
+      penetration, pressure_unit_);
 }
 
 }  // namespace asp

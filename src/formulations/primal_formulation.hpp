@@ -79,8 +79,6 @@ class PrimalFormulation final : public ScaledFormulation {
   void gradient(const double *x, double *gradient) override;
   // K d (+ phi''(x) d at the iterate x with adhesion).
   void hessian_product(const double *direction, double *product) override;
-  // d.K d: phi'' < 0 makes K an upper bound of every Hessian.
-  double curvature_bound(const double *direction, const double *product) const override;
   double gradient_at_zero(double *out) override;
   // The quadratic part is the elastic energy (1/2) u.K u; with adhesion the local term is the
   // interaction's phi.
@@ -125,7 +123,6 @@ class PrimalFormulation final : public ScaledFormulation {
   // uniformly until it touches the wall (its energy unchanged).
   void touch_at_zero_load();
 
-  const Field &stiffness_;  // normalised: backward(stiffness * forward(u)) = K u
   // Scaled, in u (0 under mean-gap and load control, where it does not matter).
   double penetration_;
   // Under load control, the scaled pressure the load puts on each unknown of the surface (0

@@ -101,12 +101,9 @@ bool SoftFormulation::store_state_from_spectrum(Complex *s) {
   // mean instead.
   const std::int64_t surface = substrate_.surface_size();
   Field elastic(static_cast<std::size_t>(surface));
-  const double *k = substrate_.normalised_stiffness().data();
-  const double factor = 1.0 / substrate_.pixel_stiffness();
-  const auto entries = static_cast<std::int64_t>(substrate_.layout().size());
-  loops::for_each(entries, [&](std::int64_t q) { s[q] *= factor * k[q]; });
-  if (load_control() && substrate_.layout().is_mean(0)) s[0] = 0.0;
-  substrate_.surface_backward(s, elastic.data());
+  substrate_.stiffness_of_spectrum(
+      s, elastic.data(),
+      Substrate::KernelTimes{1.0 / substrate_.pixel_stiffness(), load_control()});
 
   // The state: that pressure in physical units, then the gap it makes, so that gap =
   // K^-1 p - (h - max h) - delta holds to rounding (on a free substrate K u outside the box,
@@ -118,25 +115,19 @@ bool SoftFormulation::store_state_from_spectrum(Complex *s) {
     p[i] = (e[i] + load) * pressure;
     return p[i] / n;
   });
-  const double *c = substrate_.normalised_compliance().data();
-  substrate_.forward(p, s);
-  loops::for_each(entries, [&](std::int64_t q) { s[q] *= c[q]; });
   double *displacement = elastic.data();
-  substrate_.backward(s, displacement);
+  substrate_.apply_compliance(p, displacement, s);
   counters_.transforms += 3;
   // Under mean-pressure control the convention mean u = pbar/K~(0) sets the penetration that
   // keeps the iterate's gap: delta = pbar/K~(0) - l mean(u).
   const double delta = load_control() ? mean_pressure / substrate_.k0() - length_unit_ * mean_u
                                       : penetration_ * length_unit_;
-  double *g = state_.gap.data();
   const double top = max_height_;
-  const double check = loops::sum(grid_.reductions(), n_, [&](std::int64_t i) {
-    g[i] = displacement[i] - (heights_[i] - top) - delta;
-    return 0.0 * (p[i] + g[i]);  // NaN if anything overflowed
-  });
-  state_.penetration = delta;
-  system_.remember_reference_pressure(pressure_unit_);
-  return check == 0.0 && std::isfinite(delta);
+  return system_.store_solved_state(
+      [&](std::int64_t i) {
+        return SolvedPixel{p[i], displacement[i] - (heights_[i] - top) - delta, false};
+      },
+      [&](double) { return delta; }, pressure_unit_);
 }
 
 }  // namespace asp

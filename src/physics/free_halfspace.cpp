@@ -244,13 +244,7 @@ void FreeHalfSpace::set_k0(double) { refuse_k0(); }
 
 void FreeHalfSpace::displacement_from_pressure(const double *pressure,
                                                double *displacement) const {
-  const Field &compliance = normalised_compliance();
-  Spectrum s = make_spectrum();
-  forward(pressure, s.data());
-  Complex *spectrum = s.data();
-  const double *c = compliance.data();
-  loops::for_each(layout_.size(), [&](std::int64_t k) { spectrum[k] *= c[k]; });
-  backward(s.data(), displacement);
+  apply_compliance(pressure, displacement);
 }
 
 double FreeHalfSpace::elastic_energy_of_pressure(const double *pressure) const {

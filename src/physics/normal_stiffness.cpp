@@ -21,29 +21,19 @@ namespace {
 // finite differences of solves can check it.
 constexpr double relative_tolerance = 1e-12;
 
-// One application of a substrate's operator: out = backward(kernel * forward(in)), where
-// forward and backward are the grid's transforms (compliance) or the surface's (stiffness).
+// One application of a substrate's operator, K^-1 on the grid (compliance) or K on the
+// surface (stiffness), through the substrate's helper with a work spectrum of its own;
+// counts the transforms.
 class Operator {
  public:
   Operator(const Substrate &substrate, bool on_surface)
-      : substrate_(substrate),
-        on_surface_(on_surface),
-        kernel_(on_surface ? substrate.normalised_stiffness()
-                           : substrate.normalised_compliance()),
-        spectrum_(substrate.make_spectrum()) {}
+      : substrate_(substrate), on_surface_(on_surface), spectrum_(substrate.make_spectrum()) {}
 
   void apply(const double *in, double *out) {
-    Complex *s = spectrum_.data();
     if (on_surface_)
-      substrate_.surface_forward(in, s);
+      substrate_.apply_stiffness(in, out, spectrum_.data());
     else
-      substrate_.forward(in, s);
-    const double *k = kernel_.data();
-    loops::for_each(substrate_.layout().size(), [&](std::int64_t q) { s[q] *= k[q]; });
-    if (on_surface_)
-      substrate_.surface_backward(s, out);
-    else
-      substrate_.backward(s, out);
+      substrate_.apply_compliance(in, out, spectrum_.data());
     transforms += 2;
   }
 
@@ -52,7 +42,6 @@ class Operator {
  private:
   const Substrate &substrate_;
   bool on_surface_;
-  const Field &kernel_;
   Spectrum spectrum_;
 };
 

@@ -119,23 +119,14 @@ void PeriodicHalfSpace::backward(Complex *spectrum, double *field) const {
   grid_.fft().backward(spectrum, field);
 }
 
-void PeriodicHalfSpace::apply(const Field &kernel, const double *in, double *out) const {
-  Spectrum s = make_spectrum();
-  forward(in, s.data());
-  Complex *spectrum = s.data();
-  const double *k = kernel.data();
-  loops::for_each(layout_.size(), [&](std::int64_t i) { spectrum[i] *= k[i]; });
-  backward(s.data(), out);
-}
-
 void PeriodicHalfSpace::displacement_from_pressure(const double *pressure,
                                                    double *displacement) const {
-  apply(normalised_compliance(), pressure, displacement);
+  apply_compliance(pressure, displacement);
 }
 
 void PeriodicHalfSpace::pressure_from_displacement(const double *displacement,
                                                    double *pressure) const {
-  apply(normalised_stiffness(), displacement, pressure);
+  apply_stiffness(displacement, pressure);
 }
 
 double PeriodicHalfSpace::elastic_energy_of_pressure(const double *pressure) const {
@@ -146,14 +137,13 @@ double PeriodicHalfSpace::elastic_energy_of_pressure(const double *pressure) con
   if (loops::maximum(grid_.reductions(), n,
                      [&](std::int64_t i) { return std::fabs(pressure[i]); }) == 0.0)
     return 0.0;
-  Spectrum s = make_spectrum();
-  forward(pressure, s.data());
-  const Field &compliance = normalised_compliance();
-  layout_.for_each([&](std::int64_t k, double q, double) {
-    s[k] = q > 0.0 ? s[k] * compliance[k] : Complex(0.0);
-  });
   Field u = grid_.make_field();
-  backward(s.data(), u.data());
+  apply_compliance(pressure, u.data(), nullptr,
+                   [](Complex *s, const double *compliance, const SpectralLayout &layout) {
+                     layout.for_each([&](std::int64_t k, double q, double) {
+                       s[k] = q > 0.0 ? s[k] * compliance[k] : Complex(0.0);
+                     });
+                   });
   return elastic_energy(u.data());
 }
 

@@ -69,7 +69,6 @@ class PeriodicHalfSpace final : public Substrate {
 
  private:
   double stiffness_at(double q) const { return q > 0.0 ? law_->at(q) : k0_; }
-  void apply(const Field &kernel, const double *in, double *out) const;
 
   const Grid &grid_;
   std::unique_ptr<const StiffnessLaw> law_;

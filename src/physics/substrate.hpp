@@ -12,6 +12,7 @@
 
 #include "core/aligned_field.hpp"
 #include "core/grid.hpp"
+#include "core/loops.hpp"
 #include "core/spectral_layout.hpp"
 
 namespace asp {
@@ -19,6 +20,16 @@ namespace asp {
 // Whether the substrate's box repeats (periodic) or is alone in an unloaded surface (free).
 enum class SubstrateKind { periodic, free };
 const char *substrate_name(SubstrateKind kind);
+
+// A pass over a spectrum for the elastic operator's helpers below that also sums the
+// quadratic form of the field it came from: s_k <- factor kernel_k s_k, returning factor
+// times the sum over all modes of kernel_k |s_k|^2 as it was (Parseval, the kernel carrying
+// the transform's 1/N: d.K d or d.K^-1 d of the field d with spectrum s), so that a Hessian
+// product gives its curvature without a pass of its own. Stored entries count twice but for
+// the single ones, which are read before the pass overwrites them.
+double kernel_times_summing(const Reductions &reductions, const SpectralLayout &layout,
+                            Complex *s, const double *kernel, double factor);
+
 
 // What the substrate says about the stiffness K~(0) of its mean (q = 0) displacement mode:
 // a convention that links mean pressure and mean displacement, which the user may set (the
@@ -85,10 +96,103 @@ class Substrate {
   // makes: K~(0) on a periodic substrate. It links the scales of load and penetration.
   virtual double uniform_pressure_stiffness() const = 0;
 
+  // ---- The elastic operator: a forward transform, one pass over the spectrum with the
+  // kernel (the normalised compliance or stiffness above), a backward transform. Every
+  // formulation and substrate applies K or K^-1 through these, whatever the layout (periodic
+  // or padded, serial or distributed):
+  //   apply_compliance(pressure, displacement): u = K^-1 p, from the grid onto the grid (on a
+  //     free substrate the displacement of the box);
+  //   compliance_onto_surface(pressure, surface_displacement): the same displacement over the
+  //     whole surface (on a free substrate outside the box too, where no pressure acts);
+  //   surface_compliance(surface_field, surface_out): K^-1 over the whole surface, the inverse
+  //     of apply_stiffness (a preconditioner's, where the surface reaches beyond the grid);
+  //   grid_stiffness(field, out): K of a field on the grid, read back on the grid (on a free
+  //     substrate the field padded with zeros and the result cropped to the box: not the
+  //     inverse of apply_compliance there, but a preconditioner's approximation of it);
+  //   apply_stiffness(surface_displacement, surface_pressure): p = K u over the surface;
+  //   stiffness_of_spectrum(spectrum, surface_pressure): the same from surface_forward(u),
+  //     for a caller that holds the displacement's spectrum already (it is overwritten).
+  // `spectrum` is a work buffer from make_spectrum(), or null for one made for the call: a
+  // solver's loop passes its own, so that it allocates nothing; it holds no meaning after
+  // the call. `pass(s, kernel, layout)` is the pass over the spectrum s: by default
+  // KernelTimes, s_k <- factor kernel_k s_k; a caller that fuses other work into that pass
+  // (a Parseval sum, a mode left out, a right-hand side) gives its own, which must leave in
+  // s what the backward transform is to read. Collective on a distributed grid; the fields
+  // must not overlap the substrate's own work arrays (they are the caller's).
+  struct KernelTimes {
+    double factor = 1.0;
+    // Without the q = 0 mode (the entry the layout calls the mean, on the process holding
+    // it): the mean-pressure controls, where the load sets the mean pressure instead.
+    bool without_mean = false;
+    void operator()(Complex *s, const double *kernel, const SpectralLayout &layout) const {
+      const double f = factor;
+      loops::for_each(layout.size(), [&](std::int64_t k) { s[k] *= f * kernel[k]; });
+      if (without_mean && layout.is_mean(0)) s[0] = 0.0;
+    }
+  };
+  template <class Pass = KernelTimes>
+  void apply_compliance(const double *pressure, double *displacement,
+                        Complex *spectrum = nullptr, Pass &&pass = Pass()) const {
+    elastic_operator(normalised_compliance(), false, false, pressure, displacement, spectrum,
+                     pass);
+  }
+  template <class Pass = KernelTimes>
+  void compliance_onto_surface(const double *pressure, double *surface_displacement,
+                               Complex *spectrum = nullptr, Pass &&pass = Pass()) const {
+    elastic_operator(normalised_compliance(), false, true, pressure, surface_displacement,
+                     spectrum, pass);
+  }
+  template <class Pass = KernelTimes>
+  void surface_compliance(const double *surface_field, double *surface_out,
+                          Complex *spectrum = nullptr, Pass &&pass = Pass()) const {
+    elastic_operator(normalised_compliance(), true, true, surface_field, surface_out, spectrum,
+                     pass);
+  }
+  template <class Pass = KernelTimes>
+  void grid_stiffness(const double *field, double *out, Complex *spectrum = nullptr,
+                      Pass &&pass = Pass()) const {
+    elastic_operator(normalised_stiffness(), false, false, field, out, spectrum, pass);
+  }
+  template <class Pass = KernelTimes>
+  void apply_stiffness(const double *surface_displacement, double *surface_pressure,
+                       Complex *spectrum = nullptr, Pass &&pass = Pass()) const {
+    elastic_operator(normalised_stiffness(), true, true, surface_displacement,
+                     surface_pressure, spectrum, pass);
+  }
+  template <class Pass = KernelTimes>
+  void stiffness_of_spectrum(Complex *spectrum, double *surface_pressure,
+                             Pass &&pass = Pass()) const {
+    pass(spectrum, normalised_stiffness().data(), layout());
+    surface_backward(spectrum, surface_pressure);
+  }
+
   // The elastic energy reported for a pressure on the grid: for a periodic substrate the
   // (A/2) sum over q != 0 of K~(q)|u^_q|^2 of u = K^-1 p, without the q = 0 term that
   // depends on the K~(0) convention; for a free one (a/2) sum p.K^-1 p, all of it.
   virtual double elastic_energy_of_pressure(const double *pressure) const = 0;
+
+ private:
+  template <class Pass>
+  void elastic_operator(const Field &kernel, bool from_surface, bool onto_surface,
+                        const double *in, double *out, Complex *spectrum, Pass &pass) const {
+    // The kernel is fetched (and made, on first use) before the transforms: a free
+    // substrate makes it in the work field that its transforms use.
+    const double *k = kernel.data();
+    Spectrum own;
+    if (spectrum == nullptr) {
+      own = make_spectrum();
+      spectrum = own.data();
+    }
+    if (from_surface)
+      surface_forward(in, spectrum);
+    else
+      forward(in, spectrum);
+    pass(spectrum, k, layout());
+    if (onto_surface)
+      surface_backward(spectrum, out);
+    else
+      backward(spectrum, out);
+  }
 };
 
 }  // namespace asp

@@ -140,13 +140,8 @@ void System::displacement(double *out) const {
   // the gap it would carry the rounding of the gap and the penetration, 1e-16 of their size,
   // which under a wall of long range can be 1e25 while the displacement is 1e-3: from the
   // pressure it keeps its own precision. The transforms run on the library's buffers.
-  Spectrum spectrum = substrate_->make_spectrum();
-  substrate_->forward(state_.pressure.data(), spectrum.data());
-  Complex *s = spectrum.data();
-  const double *c = substrate_->normalised_compliance().data();
-  loops::for_each(substrate_->layout().size(), [&](std::int64_t q) { s[q] *= c[q]; });
   Field u = grid_->make_field();
-  substrate_->backward(s, u.data());
+  substrate_->apply_compliance(state_.pressure.data(), u.data());
   std::copy(u.begin(), u.end(), out);
 }
 

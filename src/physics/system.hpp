@@ -3,11 +3,14 @@
 // current state. The state is kept between solves so that a load sweep warm-starts.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <memory>
 
 #include "core/aligned_field.hpp"
 #include "core/grid.hpp"
+#include "core/loops.hpp"
 #include "physics/interaction.hpp"
 #include "physics/stiffness_law.hpp"
 #include "physics/substrate.hpp"
@@ -25,6 +28,15 @@ struct ContactState {
   Field pressure;
   Field gap;
   double penetration = 0.0;
+};
+
+// One pixel of a solved state, in physical units, as a formulation reads it from its
+// iterate: the pressure, the gap, and (with the hard wall) whether the pixel is on the wall,
+// in the solver's active set.
+struct SolvedPixel {
+  double pressure;
+  double gap;
+  bool on_wall;
 };
 
 class System {
@@ -100,6 +112,40 @@ class System {
   // the state reset rather than half-scaled.
   void set_state_held_by_solve(bool held) { state_held_by_solve_ = held; }
   bool state_held_by_solve() const { return state_held_by_solve_; }
+
+  // Stores a solved state, the one way every formulation writes its result back:
+  // pixel(i) gives pixel i's SolvedPixel (it may read the state's arrays at i, which are
+  // written after it), then penetration(mean_gap) the penetration from the mean of the gap as
+  // stored; the reference pressure of the solve is remembered. With the hard wall the gap is
+  // stored exactly 0 on the wall and > 0 elsewhere, so that the contact set (g = 0) is the
+  // solver's active set and never the sign of a rounding residue: off the wall a gap <= 0 (a
+  // pixel that touches with no pressure, to rounding, or that the iterate leaves
+  // interpenetrating, by at most its error) is stored as the smallest positive double, the
+  // marker of a pixel just off the wall; NaN is kept, for the check. Without the wall (soft
+  // potentials) the gap is stored as it is. Returns false if a pressure, a gap as the solve
+  // gave it or the penetration is not finite (the caller then resets the state).
+  template <class Pixel, class Penetration>
+  bool store_solved_state(Pixel &&pixel, Penetration &&penetration, double reference_pressure) {
+    constexpr double off_the_wall = std::numeric_limits<double>::denorm_min();
+    double *p = state_.pressure.data();
+    double *g = state_.gap.data();
+    const bool wall = interaction_->has_hard_wall();
+    const double n = static_cast<double>(grid_->n_pixels());
+    const auto store = [&](std::int64_t i, double *sum) {
+      const SolvedPixel s = pixel(i);
+      const double gi = s.gap;
+      const double open = gi > 0.0 || std::isnan(gi) ? gi : off_the_wall;
+      p[i] = s.pressure;
+      g[i] = !wall ? gi : (s.on_wall ? 0.0 : open);
+      sum[0] += g[i] / n;
+      sum[1] += 0.0 * (p[i] + gi);  // NaN if anything overflowed
+    };
+    const auto sums = loops::sums<2>(grid_->reductions(), grid_->local_pixels(), store);
+    const double delta = penetration(sums[0]);
+    state_.penetration = delta;
+    remember_reference_pressure(reference_pressure);
+    return sums[1] == 0.0 && std::isfinite(delta);
+  }
 
   // Observables of the current state. Contact as Interaction::contact_map defines it: with
   // the hard wall the pixels on the wall, without it where the potential repels.

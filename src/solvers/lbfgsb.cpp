@@ -246,11 +246,9 @@ class Lbfgsb {
   }
 
  private:
-  // The start must be feasible: x <- max(x, lower), which changes no feasible entry.
-  void project_start() {
-    double *x = x_;
-    loops::for_each(n_, [&](std::int64_t i) { x[i] = x[i] > bound(i) ? x[i] : bound(i); });
-  }
+  // The start must be feasible: x <- max(x, lower), which changes no feasible entry (there is
+  // no mean constraint to restore: lbfgsb() refuses one).
+  void project_start() { f_.project(x_); }
 
   // Step 3: the minimiser of the model over the unknowns the Cauchy point leaves free, by
   // the direct primal method: on the free set the model's Hessian is theta I - Z^T W M W^T Z,

@@ -170,11 +170,7 @@ TEST_P(FollowedSeparable, GradientAndChangeAreTheEvaluatedOnes) {
   // An iterate with every unknown off the bound (so that a short step cuts nothing) and, under
   // the mean constraint, the mean on target, as the solver keeps it.
   Vector x = random_vector(n, 31, 0.1, 1.5);
-  if (f.constrains_mean()) {
-    double mean = 0.0;
-    for (double v : x) mean += v / static_cast<double>(n);
-    for (double &v : x) v *= f.mean_target() / mean;
-  }
+  f.project(x.data());
   Vector q(n), c(n), k(n), states(n), y(n), qy(n), states_y(n), evaluated(n), full(n);
   f.quadratic_part_at_zero(c.data());
   const double quadratic_x = f.quadratic_part(x.data(), q.data());

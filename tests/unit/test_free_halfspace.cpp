@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/error.hpp"
@@ -87,6 +88,44 @@ TEST(FreeHalfSpace, PaddedComplianceIsLoveSummedDirectly) {
     double mean = 0.0;
     for (double v : uniform) mean += v / static_cast<double>(uniform.size());
     EXPECT_NEAR(substrate.uniform_pressure_stiffness(), 1.0 / mean, 1e-12 / mean);
+  }
+}
+
+// The elastic-operator helper of the substrate on a free half-space: apply_compliance is
+// Love's sum (1e-12 of the largest displacement, as above); compliance_onto_surface holds the
+// same displacement on the box, to the bit (the same transforms and pass), and the stiffness
+// of the padded surface undoes it: K applied to that surface displacement gives back the
+// pressure on the box and 0 outside it. The last holds to rounding times the condition of
+// the padded compliance (the ratio of its largest to smallest spectral entry, below 100 on
+// these grids), hence 1e-12 of the largest pressure. A caller's work spectrum gives the same
+// bits as one made for the call.
+TEST(FreeHalfSpace, ElasticOperatorHelperIsLoveSummedDirectly) {
+  for (const auto &shape : {std::make_pair(7, 5), std::make_pair(8, 6), std::make_pair(1, 9)}) {
+    auto grid = asp_test::grid_2d(shape.first, shape.second, 1.3, 0.7);
+    const double modulus = 2.5;
+    asp::FreeHalfSpace substrate(*grid, modulus);
+    const auto n = static_cast<std::size_t>(grid->n_pixels());
+    Vector p(n);
+    for (std::size_t i = 0; i < n; ++i) p[i] = std::cos(1.7 * i * i + 0.3) + 0.5;
+    asp::Field u = grid->make_field();
+    substrate.apply_compliance(p.data(), u.data());
+    const Vector direct = love_displacement(*grid, modulus, p);
+    const double scale = largest_magnitude(direct);
+    for (std::size_t i = 0; i < n; ++i) ASSERT_NEAR(u[i], direct[i], 1e-12 * scale) << i;
+
+    const auto m = static_cast<std::size_t>(substrate.surface_size());
+    ASSERT_EQ(m, 4 * n);
+    Vector surface(m), back(m);
+    asp::Spectrum work = substrate.make_spectrum();
+    substrate.compliance_onto_surface(p.data(), surface.data(), work.data());
+    for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(surface[i], u[i]) << i;
+    substrate.apply_stiffness(surface.data(), back.data());
+    const double largest = largest_magnitude(p);
+    for (std::size_t i = 0; i < m; ++i)
+      ASSERT_NEAR(back[i], i < n ? p[i] : 0.0, 1e-12 * largest) << i;
+    Vector again(m);
+    substrate.apply_stiffness(surface.data(), again.data(), work.data());
+    for (std::size_t i = 0; i < m; ++i) ASSERT_EQ(again[i], back[i]) << i;
   }
 }
 
