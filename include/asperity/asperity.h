@@ -755,9 +755,10 @@ ASP_EXPORT int asp_solver_describe(const asp_solver *solver, char *buffer, int64
  *                     topography) first solves the same scene on this many grids coarser
  *                     by 2 per axis (same box, substrate, K~(0) and interaction; the heights'
  *                     spectrum truncated below the coarse grid's Nyquist wavevector), the
- *                     coarsest first, each to the tolerance times 10 per level below the
- *                     system's grid (at most 1e-3), and starts from the finest of them,
- *                     prolonged by spectral zero-padding of the pressure; the solve on the
+ *                     coarsest first, each to the tolerance times 100 per level below the
+ *                     system's grid (at most 1e-4, at least the tolerance), and starts from
+ *                     the finest of them, its pressure interpolated linearly and the gap
+ *                     the one that pressure makes (docs/algorithms.md); the solve on the
  *                     system's grid then meets the tolerance as without levels. A state
  *                     with pressure (a warm start, a load sweep) is solved from as it is.
  *                     Under penetration control the coarse levels keep the rigid body where
