@@ -63,6 +63,17 @@ void cascade(const AlgorithmSpec &algorithm, const OptionValues &options, System
   // One reference pressure for every level: their errors are in the same units, and their
   // tolerances mean the same thing.
   coarse->set_reference_pressure(reference_pressure);
+  // Adhesion by continuation: the coarse levels solve the non-adhesive contact, and the
+  // adhesive solve on the system's grid starts from it, as a cold solve starts from the
+  // surfaces touching at their highest point. Adhesive contact has several stable states;
+  // a coarse adhesive state holds contact that its coarse pixels made and the adhesion keeps
+  // (a state of higher energy than the cold solve's, on some scenes), where the contact
+  // grown from the non-adhesive one reached the cold solve's state or a lower energy on
+  // every scene measured (test_nested_grids.cpp, docs/algorithms.md). A tensile or zero
+  // load has no non-adhesive solution to start from: there the levels keep the adhesion.
+  if (coarse->interaction().kind() == InteractionKind::adhesive_hard_wall &&
+      !(control == Control::mean_pressure && value <= 0.0))
+    coarse->set_hard_wall();
   // Under penetration control the rigid body stays where it is: the penetration counts from
   // the highest height, which the truncation lowered.
   const double coarse_value = control == Control::penetration
