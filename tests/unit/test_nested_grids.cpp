@@ -28,7 +28,8 @@ struct Outcome {
   double energy = 0.0;
 };
 
-// Solves a fresh copy of the scene with the given levels (and variable, if any).
+// Solves a fresh copy of the scene with the given levels (levels_auto: "auto") and
+// variable, if any.
 Outcome solve_scene(const std::shared_ptr<asp::Grid> &grid, const std::vector<double> &h,
                     asp::SubstrateKind substrate, double work, double range,
                     const char *algorithm, const char *variable, Control control, double value,
@@ -39,7 +40,10 @@ Outcome solve_scene(const std::shared_ptr<asp::Grid> &grid, const std::vector<do
   asp::Solver solver(algorithm);
   solver.set_option("tolerance", tolerance);
   if (variable != nullptr) solver.set_option("variable", std::string(variable));
-  solver.set_option("levels", levels);
+  if (levels == asp::levels_auto)
+    solver.set_option("levels", std::string("auto"));
+  else
+    solver.set_option("levels", levels);
   solver.solve(system, control, value);
   Outcome o;
   o.report = solver.report();
@@ -258,6 +262,29 @@ TEST(NestedGrids, AdhesiveRoughScenesReachThePlainStateOrALowerEnergy) {
     }
   }
   std::printf("%d of 8 the same state, %d of lower energy\n", same, lower);
+}
+
+// On a grid with threads, the coarse grids take the same threads, and a nested solve there
+// reaches the plain serial one's state (to the tolerance, as above: the threads' sums run in
+// another order).
+TEST(NestedGrids, ThreadedNestedSolveEqualsSerialPlain) {
+  auto serial = asp_test::grid_2d(128, 128, 1.0, 1.0);
+  auto threaded = asp_test::grid_2d(128, 128, 1.0, 1.0);
+  threaded->set_threads(2);
+  const auto h = asp_test::rough_surface(*serial, 11);
+  asp::System system(threaded, 1.0);
+  system.set_topography(h.data());
+  EXPECT_EQ(asp::coarse_system(system)->grid().threads(), 2);
+  const Outcome plain = solve_scene(serial, h, asp::SubstrateKind::periodic, 0, 0, "bugnicourt",
+                                    nullptr, Control::mean_pressure, 0.01, 0, 1e-10);
+  const Outcome nested = solve_scene(threaded, h, asp::SubstrateKind::periodic, 0, 0,
+                                     "bugnicourt", nullptr, Control::mean_pressure, 0.01,
+                                     asp::levels_auto, 1e-10);
+  ASSERT_TRUE(plain.report.converged());
+  ASSERT_TRUE(nested.report.converged());
+  EXPECT_EQ(nested.contact, plain.contact);
+  EXPECT_LT(asp_test::max_abs_difference(plain.pressure, nested.pressure),
+            1e-8 * largest_abs(plain.pressure));
 }
 
 // ---- what levels do and refuse -------------------------------------------------------------
