@@ -74,7 +74,8 @@ int main(int argc, char **argv) {
       return 2;
     }
   }
-  if (sizes.empty()) sizes = challenge ? std::vector<long>{1024} : std::vector<long>{512, 1024, 2048};
+  if (sizes.empty())
+    sizes = challenge ? std::vector<long>{1024} : std::vector<long>{512, 1024, 2048};
 
   std::vector<Row> rows;
   for (const char *p : {"none", "fourier"}) {

@@ -25,7 +25,8 @@ namespace {
 // "'auto'" or "'a' or 'b'": the words an option also takes, for messages.
 std::string word_list(const OptionSpec &o) {
   std::string out;
-  for (const auto &word : option_words(o.name)) out += (out.empty() ? "'" : " or '") + word.first + "'";
+  for (const auto &word : option_words(o.name))
+    out += (out.empty() ? "'" : " or '") + word.first + "'";
   return out;
 }
 }  // namespace
@@ -69,8 +70,9 @@ void Solver::set_option(const std::string &name, const std::string &value) {
   if (o.type != OptionType::choice)
     throw Error(Status::invalid_argument,
                 "option '" + name + "' takes a number (set it with asp_solver_set_option)" +
-                    (option_words(o.name).empty() ? std::string(", not a string")
-                                     : ", or " + word_list(o) + ", not '" + value + "'"));
+                    (option_words(o.name).empty()
+                         ? std::string(", not a string")
+                         : ", or " + word_list(o) + ", not '" + value + "'"));
   std::string valid;
   for (const std::string &c : o.choices) {
     if (c == value) {
@@ -133,9 +135,9 @@ const std::string &Solver::option_text(const std::string &name) const {
   if (o.type != OptionType::choice)
     throw Error(Status::invalid_argument,
                 "option '" + name + "' is a number (read it with asp_solver_get_option)" +
-                    (option_words(o.name).empty() ? std::string()
-                                     : "; it reads as a string only when it is " +
-                                           word_list(o)));
+                    (option_words(o.name).empty()
+                         ? std::string()
+                         : "; it reads as a string only when it is " + word_list(o)));
   return options_.text(name);
 }
 
@@ -204,7 +206,8 @@ void Solver::solve(System &system, Control control, double value) {
   report_.evaluations = monitor.evaluations();
   // With nested grids: the iterations and evaluations of the system's own grid, the
   // transforms of every level, a coarse one's weighted by its share of the pixels.
-  report_.transforms = monitor.transforms() + static_cast<std::int64_t>(std::ceil(coarse.transforms));
+  report_.transforms =
+      monitor.transforms() + static_cast<std::int64_t>(std::ceil(coarse.transforms));
   report_.error = monitor.error();
   report_.termination = monitor.termination();
   report_.seconds = monitor.seconds();
