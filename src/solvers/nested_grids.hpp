@@ -41,7 +41,8 @@ struct CoarseWork {
 // levels = 0 or when the state carries pressure (a warm start, kept). `settings` are those
 // of the solve on the system's grid; the coarse levels take its iteration limit and stall
 // window, a tolerance loosened by level_tolerance_factor per level, and neither the history
-// nor the progress callback.
+// nor the progress callback. With exponential adhesion the coarse levels solve the
+// non-adhesive hard wall (continuation; see nested_grids.cpp), except under a load <= 0.
 CoarseWork solve_coarse_levels(const AlgorithmSpec &algorithm, const OptionValues &options,
                                System &system, Control control, double value,
                                std::int64_t levels, const MonitorSettings &settings);
