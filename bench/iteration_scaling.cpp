@@ -1,18 +1,27 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// Iterations against the grid (not a test): Polonsky-Keer with each value of its
-// `preconditioner` option on the scene of asperity_pk_benchmark (periodic half-space, E* 1,
-// self-affine surface with H 0.8, roll-off at L/4, short cutoff 8 pixels, rms slope 0.1, mean
-// pressure 0.002), to the tolerance 1e-8, one cold solve per size and option value.
+// Iterations against the grid (not a test).
 //
-// For each size and option value it prints the iterations, the transforms, the seconds of
-// the solve, the growth of the iterations from the size before (per doubling of N when the
-// sizes double), the contact fraction, and the largest difference of the pressure from that
-// of the first option value, over the largest pressure (both solves meet the same tolerance,
-// so they differ by about that much). The grid is planned with FFTW_ESTIMATE, so that the
-// planner's timing does not add noise to the seconds; they are rough on a busy machine, the
-// iterations are not.
+// By default: Polonsky-Keer with each value of its `preconditioner` option on the scene of
+// asperity_pk_benchmark (periodic half-space, E* 1, self-affine surface with H 0.8, roll-off
+// at L/4, short cutoff 8 pixels, rms slope 0.1, mean pressure 0.002), to the tolerance 1e-8.
+// With --challenge: `bugnicourt` on the gap on the contact-mechanics challenge's scene
+// (asperity_challenge: a 100 um box, H 0.8, roll-off 20 um, short cutoff 0.1 um, rms slope 1,
+// E* 25 MPa, exponential adhesion w 50 mJ/m^2, rho 2.071 nm) under penetration control at
+// 1.5 um, to the tolerance 1e-6. With --levels L (an integer or "auto") each of those solves
+// is also run with nested grids (the option "levels" = L). One cold solve per size and row.
 //
-// usage: asperity_iteration_scaling [--free] [N ...]   (default: 512 1024 2048)
+// For each size and row it prints the iterations (on the grid itself), the transforms (of
+// every level, a coarse one's weighted by its share of the pixels: the report's count), the
+// seconds of the solve, the growth of the iterations from the size before (per doubling of
+// N when the sizes double), the contact fraction, the energy (elastic + interaction, the
+// q = 0 term included: what the solve minimises, at the same penetration), and the largest
+// difference of the pressure from that of the first row, over the largest pressure (all
+// meet the same tolerance, so they differ by about that much, unless they found different
+// states). The grid is planned with FFTW_ESTIMATE, so that the planner's timing does not add
+// noise to the seconds; they are rough on a busy machine, the iterations are not.
+//
+// usage: asperity_iteration_scaling [--free] [--challenge] [--levels L] [N ...]
+//        (default sizes: 512 1024 2048; with --challenge 1024)
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -26,40 +35,79 @@
 #include "physics/topography.hpp"
 #include "solvers/solver.hpp"
 
+namespace {
+
+struct Row {
+  std::string preconditioner;  // pk only; empty for bugnicourt
+  std::string levels;          // "0", a count or "auto"
+};
+
+void set_levels(asp::Solver &solver, const std::string &levels) {
+  if (levels == "auto")
+    solver.set_option("levels", levels);
+  else
+    solver.set_option("levels", std::strtod(levels.c_str(), nullptr));
+}
+
+}  // namespace
+
 int main(int argc, char **argv) {
-  bool free = false;
+  bool free = false, challenge = false;
+  std::string levels;
   std::vector<long> sizes;
   for (int i = 1; i < argc; ++i) {
     char *end = nullptr;
     const long n = std::strtol(argv[i], &end, 10);
     if (std::strcmp(argv[i], "--free") == 0) {
       free = true;
+    } else if (std::strcmp(argv[i], "--challenge") == 0) {
+      challenge = true;
+    } else if (std::strcmp(argv[i], "--levels") == 0 && i + 1 < argc) {
+      levels = argv[++i];
     } else if (end != argv[i] && *end == '\0' && n >= 2 && n <= 16384) {
       sizes.push_back(n);
     } else {
-      std::fprintf(stderr, "usage: %s [--free] [N ...]  (grid sizes 2 to 16384)\n", argv[0]);
+      std::fprintf(stderr,
+                   "usage: %s [--free] [--challenge] [--levels L] [N ...]  (grid sizes 2 to "
+                   "16384, L a count or auto)\n",
+                   argv[0]);
       return 2;
     }
   }
-  if (sizes.empty()) sizes = {512, 1024, 2048};
+  if (sizes.empty())
+    sizes = challenge ? std::vector<long>{1024} : std::vector<long>{512, 1024, 2048};
 
-  const double tolerance = 1e-8, modulus = 1.0, slope = 0.1, mean_pressure = 0.002;
-  const std::vector<std::string> values = {"none", "fourier"};
-  std::printf("pk on the %s, self-affine surface (H 0.8, roll-off L/4, short cutoff 8 px, "
-              "rms slope %.2g), E* %.1f, mean pressure %.3g, tolerance %.0e\n",
-              free ? "free half-space" : "periodic half-space", slope, modulus, mean_pressure,
-              tolerance);
-  std::printf("%6s %15s %7s %10s %9s %8s %9s %12s\n", "N", "preconditioner", "iters",
-              "transforms", "seconds", "growth", "contact", "dp/max p");
-  std::vector<long> previous(values.size(), 0);
+  std::vector<Row> rows;
+  for (const char *p : {"none", "fourier"}) {
+    if (challenge && std::strcmp(p, "none") != 0) continue;
+    rows.push_back({challenge ? "" : p, "0"});
+    if (!levels.empty()) rows.push_back({challenge ? "" : p, levels});
+  }
+
+  const double box = challenge ? 100e-6 : 1.0, modulus = challenge ? 25e6 : 1.0;
+  const double slope = challenge ? 1.0 : 0.1, mean_pressure = 0.002, penetration = 1.5e-6;
+  const double tolerance = challenge ? 1e-6 : 1e-8;
+  if (challenge)
+    std::printf("bugnicourt (gap) on the challenge's scene, %s, penetration %.3g m, "
+                "tolerance %.0e\n",
+                free ? "free half-space" : "periodic half-space", penetration, tolerance);
+  else
+    std::printf("pk on the %s, self-affine surface (H 0.8, roll-off L/4, short cutoff 8 px, "
+                "rms slope %.2g), E* %.1f, mean pressure %.3g, tolerance %.0e\n",
+                free ? "free half-space" : "periodic half-space", slope, modulus,
+                mean_pressure, tolerance);
+  std::printf("%6s %15s %6s %7s %10s %9s %8s %9s %14s %12s\n", "N", "preconditioner",
+              "levels", "iters", "transforms", "seconds", "growth", "contact", "energy",
+              "dp/max p");
+  std::vector<long> previous(rows.size(), 0);
   for (long n : sizes) {
-    auto grid = asp::Grid::create(2, n, n, 1.0, 1.0);
+    auto grid = asp::Grid::create(2, n, n, box, box);
     grid->set_fft_planning(asp::FftPlanning::estimate);
     asp::SelfAffineParameters params;
     params.hurst = 0.8;
-    params.long_cutoff = 1.0;
-    params.rolloff = 0.25;
-    params.short_cutoff = 8.0 / n;
+    params.long_cutoff = box;
+    params.rolloff = challenge ? 20e-6 : 0.25;
+    params.short_cutoff = challenge ? 0.1e-6 : 8.0 / n;
     params.norm = asp::RoughnessNorm::rms_slope;
     params.target = slope;
     params.seed = 1;
@@ -68,14 +116,24 @@ int main(int argc, char **argv) {
     asp::System system(grid, modulus,
                        free ? asp::SubstrateKind::free : asp::SubstrateKind::periodic);
     system.set_topography(heights.data());
+    if (challenge) system.set_adhesion(0.05, 2.071e-9);
 
     std::vector<double> first;
-    for (std::size_t v = 0; v < values.size(); ++v) {
-      asp::Solver solver("pk");
+    for (std::size_t v = 0; v < rows.size(); ++v) {
+      asp::Solver solver(challenge ? "bugnicourt" : "pk");
       solver.set_option("tolerance", tolerance);
-      solver.set_option("preconditioner", values[v]);
+      if (challenge) {
+        solver.set_option("variable", std::string("gap"));
+        solver.set_option("max_iterations", 1e5);
+      } else {
+        solver.set_option("preconditioner", rows[v].preconditioner);
+      }
+      set_levels(solver, rows[v].levels);
       system.reset_state();
-      solver.solve(system, asp::Control::mean_pressure, mean_pressure);
+      if (challenge)
+        solver.solve(system, asp::Control::penetration, penetration);
+      else
+        solver.solve(system, asp::Control::mean_pressure, mean_pressure);
       const asp::SolveReport &r = solver.report();
       const asp::Field &p = system.state().pressure;
       double difference = 0.0, largest = 0.0;
@@ -87,15 +145,18 @@ int main(int argc, char **argv) {
           largest = std::max(largest, std::fabs(first[i]));
         }
       }
+      const double energy =
+          system.elastic_energy() + system.mean_mode_energy() + system.interaction_energy();
       const long iterations = static_cast<long>(r.iterations);
       char growth[32] = "";
       if (previous[v] > 0)
         std::snprintf(growth, sizeof growth, "%.2f",
                       static_cast<double>(iterations) / static_cast<double>(previous[v]));
       previous[v] = iterations;
-      std::printf("%6ld %15s %7ld %10lld %9.2f %8s %9.4f %12.1e%s\n", n, values[v].c_str(),
+      std::printf("%6ld %15s %6s %7ld %10lld %9.2f %8s %9.4f %14.8e %12.1e%s\n", n,
+                  challenge ? "-" : rows[v].preconditioner.c_str(), rows[v].levels.c_str(),
                   iterations, static_cast<long long>(r.transforms), r.seconds, growth,
-                  system.contact_fraction(), v == 0 ? 0.0 : difference / largest,
+                  system.contact_fraction(), energy, v == 0 ? 0.0 : difference / largest,
                   r.converged() ? "" : "  (not converged)");
       std::fflush(stdout);
     }

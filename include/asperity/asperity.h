@@ -785,6 +785,32 @@ ASP_EXPORT int asp_solver_describe(const asp_solver *solver, char *buffer, int64
  *                     many iterations have passed since the error last fell below 0.99
  *                     times the error of the iteration at which it last did so (the
  *                     starting point at first); 0: never stall;
+ *   "levels"          integer in [0, 16], or the string "auto"; default 0: nested grids
+ *                     (cascadic coarse-to-fine). A solve whose system state carries no
+ *                     pressure (a new system, after asp_system_reset or a new
+ *                     topography) first solves the same scene on this many grids coarser
+ *                     by 2 per axis (same box, substrate, K~(0) and interaction; the heights'
+ *                     spectrum truncated below the coarse grid's Nyquist wavevector), the
+ *                     coarsest first, each to the tolerance times 100 per level below the
+ *                     system's grid (at most 1e-4, at least the tolerance), and starts from
+ *                     the finest of them, its pressure interpolated linearly and the gap
+ *                     the one that pressure makes (docs/algorithms.md); the solve on the
+ *                     system's grid then meets the tolerance as without levels. A state
+ *                     with pressure (a warm start, a load sweep) is solved from as it is.
+ *                     Under penetration control the coarse levels keep the rigid body where
+ *                     it is; under mean-pressure or mean-gap control they take the same
+ *                     value. "auto" halves while both sides stay at least 64 pixels (none on
+ *                     an odd size or a distributed grid), and reads back as -1 from
+ *                     asp_solver_get_option and as "auto" from asp_solver_get_option_string
+ *                     (a number reads back only from the former). An explicit count the grid
+ *                     cannot take (an odd size on the way, a side below 8 pixels, or a grid
+ *                     distributed over processes) is refused by asp_solver_solve and
+ *                     asp_solver_supports with ASP_ERR_UNSUPPORTED naming the option and
+ *                     why. The report counts the iterations, evaluations and history of the
+ *                     system's own grid, the seconds of all levels, and the transforms of all
+ *                     levels, a coarse one's weighted by its pixels over the system's (one
+ *                     transform of a grid halved per axis counts a quarter); the progress
+ *                     callback is called on the system's grid only;
  * and its own options (asp_solver_describe lists them). Integer options take whole numbers
  * given as doubles. An unknown name or a value outside the range is refused with
  * ASP_ERR_INVALID_ARGUMENT, naming the option and listing the valid names or the range;

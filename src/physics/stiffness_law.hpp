@@ -5,6 +5,7 @@
 // calls it per pixel. A new periodic substrate is a new law.
 #pragma once
 
+#include <memory>
 #include <string>
 
 namespace asp {
@@ -24,6 +25,8 @@ class StiffnessLaw {
   virtual const char *formula() const = 0;
   // E*, the contact modulus E/(1 - nu^2) of the body.
   virtual double contact_modulus() const = 0;
+  // The same law, for the same body on another grid (nested grids' coarser levels).
+  virtual std::unique_ptr<const StiffnessLaw> copy() const = 0;
 };
 
 // The half-space, K~(q) = E*|q|/2 (thesis eq. 5), without a K~(0) of its own.
@@ -36,6 +39,9 @@ class HalfSpaceLaw final : public StiffnessLaw {
   const char *name() const override { return "periodic half-space"; }
   const char *formula() const override { return "E*|q|/2"; }
   double contact_modulus() const override { return modulus_; }
+  std::unique_ptr<const StiffnessLaw> copy() const override {
+    return std::make_unique<HalfSpaceLaw>(*this);
+  }
 
  private:
   double modulus_;
@@ -63,6 +69,9 @@ class LayerLaw final : public StiffnessLaw {
            "- 2qt)";
   }
   double contact_modulus() const override { return modulus_; }
+  std::unique_ptr<const StiffnessLaw> copy() const override {
+    return std::make_unique<LayerLaw>(*this);
+  }
   double poisson_ratio() const { return poisson_; }
   double thickness() const { return thickness_; }
   // M = E(1 - nu)/((1 + nu)(1 - 2 nu)), the modulus of uniaxial strain.

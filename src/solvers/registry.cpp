@@ -8,6 +8,7 @@
 #include "core/error.hpp"
 #include "solvers/bugnicourt.hpp"
 #include "solvers/lbfgsb.hpp"
+#include "solvers/nested_grids.hpp"
 #include "solvers/polonsky_keer.hpp"
 #include "solvers/unconstrained_algorithms.hpp"
 
@@ -26,8 +27,22 @@ std::vector<OptionSpec> common_options() {
       {"stall_window", OptionType::integer, 1000, 0, largest_count, false, {},
        "stop as stalled when this many iterations pass without the error falling below "
        "0.99 times the last error that did so (0: never)"},
+      {"levels", OptionType::integer, 0, 0, 16, false, {},
+       "nested grids: solve first on this many grids coarser by 2 per axis, from the "
+       "coarsest up, when the state carries no pressure (0: none; \"auto\": halve while "
+       "both sides stay at least 64 pixels)"},
   };
 }
+
+}  // namespace
+
+const std::vector<std::pair<std::string, double>> &option_words(const std::string &name) {
+  static const std::vector<std::pair<std::string, double>> none;
+  static const std::vector<std::pair<std::string, double>> levels = {{"auto", levels_auto}};
+  return name == "levels" ? levels : none;
+}
+
+namespace {
 
 AlgorithmSpec with_common_options(AlgorithmSpec spec) {
   std::vector<OptionSpec> options = common_options();

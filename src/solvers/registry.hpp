@@ -6,6 +6,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "solvers/algorithm.hpp"
@@ -26,5 +27,10 @@ void check_request(const AlgorithmSpec &algorithm, const OptionValues &options,
                    const System &system, Control control, const double *value = nullptr);
 // The algorithm, what it serves and its options, as text (asp_solver_describe).
 std::string describe(const AlgorithmSpec &algorithm);
+
+// Words a real or integer option also takes, each standing for a number outside its range
+// ("levels": "auto" for -1): set with asp_solver_set_option_string, read back by either
+// getter. Empty for the other options.
+const std::vector<std::pair<std::string, double>> &option_words(const std::string &name);
 
 }  // namespace asp

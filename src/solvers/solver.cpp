@@ -21,6 +21,16 @@ Solver::Solver(const std::string &algorithm) : algorithm_(find_algorithm(algorit
   }
 }
 
+namespace {
+// "'auto'" or "'a' or 'b'": the words an option also takes, for messages.
+std::string word_list(const OptionSpec &o) {
+  std::string out;
+  for (const auto &word : option_words(o.name))
+    out += (out.empty() ? "'" : " or '") + word.first + "'";
+  return out;
+}
+}  // namespace
+
 const OptionSpec &Solver::spec_of(const std::string &name) const {
   std::string valid;
   for (const OptionSpec &o : algorithm_.options) {
@@ -51,10 +61,18 @@ void Solver::set_option(const std::string &name, double value) {
 
 void Solver::set_option(const std::string &name, const std::string &value) {
   const OptionSpec &o = spec_of(name);
+  for (const auto &word : option_words(o.name)) {
+    if (word.first == value) {
+      options_.numbers[name] = word.second;
+      return;
+    }
+  }
   if (o.type != OptionType::choice)
-    throw Error(Status::invalid_argument, "option '" + name +
-                                              "' takes a number (set it with "
-                                              "asp_solver_set_option), not a string");
+    throw Error(Status::invalid_argument,
+                "option '" + name + "' takes a number (set it with asp_solver_set_option)" +
+                    (option_words(o.name).empty()
+                         ? std::string(", not a string")
+                         : ", or " + word_list(o) + ", not '" + value + "'"));
   std::string valid;
   for (const std::string &c : o.choices) {
     if (c == value) {
@@ -112,9 +130,14 @@ double Solver::fingerprint() const {
 
 const std::string &Solver::option_text(const std::string &name) const {
   const OptionSpec &o = spec_of(name);
+  for (const auto &word : option_words(o.name))
+    if (options_.number(name) == word.second) return word.first;
   if (o.type != OptionType::choice)
     throw Error(Status::invalid_argument,
-                "option '" + name + "' is a number (read it with asp_solver_get_option)");
+                "option '" + name + "' is a number (read it with asp_solver_get_option)" +
+                    (option_words(o.name).empty()
+                         ? std::string()
+                         : "; it reads as a string only when it is " + word_list(o)));
   return options_.text(name);
 }
 
@@ -152,7 +175,10 @@ void Solver::solve(System &system, Control control, double value) {
   const bool keep_start = system.interaction().potential_from_callback();
   ContactState start;
   if (keep_start) start = system.state();
+  const std::int64_t levels = nested_levels(system, options_.number("levels"));
+  CoarseWork coarse;
   try {
+    coarse = solve_coarse_levels(algorithm_, options_, system, control, value, levels, settings);
     algorithm_.run(system, control, value, options_, monitor);
   } catch (...) {
     if (keep_start) {
@@ -167,7 +193,10 @@ void Solver::solve(System &system, Control control, double value) {
 
   report_.iterations = monitor.iterations();
   report_.evaluations = monitor.evaluations();
-  report_.transforms = monitor.transforms();
+  // With nested grids: the iterations and evaluations of the system's own grid, the
+  // transforms of every level, a coarse one's weighted by its share of the pixels.
+  report_.transforms =
+      monitor.transforms() + static_cast<std::int64_t>(std::ceil(coarse.transforms));
   report_.error = monitor.error();
   report_.termination = monitor.termination();
   report_.seconds = monitor.seconds();

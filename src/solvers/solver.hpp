@@ -11,6 +11,7 @@
 #include "formulations/control.hpp"
 #include "formulations/formulation.hpp"
 #include "solvers/monitor.hpp"
+#include "solvers/nested_grids.hpp"
 #include "solvers/registry.hpp"
 
 namespace asp {
@@ -38,6 +39,7 @@ class Solver {
   // serve the system under the control; changes nothing.
   void check_supported(const System &system, Control control) const {
     check_request(algorithm_, options_, system, control);
+    nested_levels(system, options_.number("levels"));  // refuses levels the grid cannot take
   }
 
   // Options by name; unknown names, wrong types and values out of range are refused with

@@ -407,6 +407,38 @@ int default_threads_are(int expected) {
   return failures;
 }
 
+// ---- nested grids --------------------------------------------------------------------------
+// A distributed grid is not coarsened (its coarse grid would need other processes' rows):
+// an explicit count of levels is refused on every process alike, naming the option and why,
+// and "auto" takes none, solving as without levels.
+void nested_levels_are_refused_on_distributed_grids() {
+  Grids g(64, 64);
+  std::vector<double> h = rough(g.distributed, g.slab.pixels, 5);
+  asp_system *system = nullptr;
+  asp_solver *solver = nullptr;
+  require_ok(asp_system_create(g.distributed, 1.0, &system), "system");
+  require_ok(asp_system_set_topography(system, data_or_null(h), g.slab.pixels), "topography");
+  require_ok(asp_solver_create("pk", &solver), "solver");
+  require_ok(asp_solver_set_option(solver, "levels", 1.0), "levels 1");
+  const int supports = asp_solver_supports(solver, system, ASP_CONTROL_MEAN_PRESSURE);
+  const std::string message = asp_last_error_message();
+  if (supports != ASP_ERR_UNSUPPORTED || message.find("option 'levels'") == std::string::npos ||
+      message.find("distributed") == std::string::npos)
+    fail("levels 1 on a distributed grid: status " + std::to_string(supports) + ", '" +
+         message + "'");
+  const int solved = asp_solver_solve(solver, system, ASP_CONTROL_MEAN_PRESSURE, 0.01);
+  if (solved != ASP_ERR_UNSUPPORTED)
+    fail("a solve with levels 1 on a distributed grid: status " + std::to_string(solved));
+  require_ok(asp_solver_set_option_string(solver, "levels", "auto"), "levels auto");
+  require_ok(asp_solver_solve(solver, system, ASP_CONTROL_MEAN_PRESSURE, 0.01),
+             "a solve with levels auto on a distributed grid");
+  int converged = 0;
+  require_ok(asp_solver_converged(solver, &converged), "converged");
+  if (!converged) fail("levels auto on a distributed grid: not converged");
+  asp_solver_destroy(solver);
+  asp_system_destroy(system);
+}
+
 int main(int argc, char **argv) {
   MPI_Init(&argc, &argv);
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
@@ -426,6 +458,7 @@ int main(int argc, char **argv) {
   generators_give_the_serial_surface(16, 2);
   generators_give_the_serial_surface(2, 45);
   bad_input_on_one_process_fails_on_all();
+  nested_levels_are_refused_on_distributed_grids();
 
   const Case cases[] = {
       {"pk", "", Wall::hard, ASP_CONTROL_MEAN_PRESSURE},

@@ -1,0 +1,444 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// Nested grids (option "levels"): the restriction of a system to a coarser grid, the
+// prolongation of its state, and solves that start from coarser levels reaching the state
+// that plain solves reach, on the closed-form scenes (Westergaard, Hertz) and an adhesive one.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+#include "physics/coarse_system.hpp"
+#include "scene.hpp"
+#include "solvers/nested_grids.hpp"
+
+namespace {
+
+using asp::Control;
+using asp_test::pi;
+
+struct Outcome {
+  asp::SolveReport report;
+  std::vector<double> pressure;
+  std::vector<double> gap;
+  double penetration = 0.0;
+  double contact = 0.0;
+  double energy = 0.0;
+};
+
+// Solves a fresh copy of the scene with the given levels (levels_auto: "auto") and
+// variable, if any.
+Outcome solve_scene(const std::shared_ptr<asp::Grid> &grid, const std::vector<double> &h,
+                    asp::SubstrateKind substrate, double work, double range,
+                    const char *algorithm, const char *variable, Control control, double value,
+                    double levels, double tolerance) {
+  asp::System system(grid, 1.0, substrate);
+  system.set_topography(h.data());
+  if (work > 0.0) system.set_adhesion(work, range);
+  asp::Solver solver(algorithm);
+  solver.set_option("tolerance", tolerance);
+  if (variable != nullptr) solver.set_option("variable", std::string(variable));
+  if (levels == asp::levels_auto)
+    solver.set_option("levels", std::string("auto"));
+  else
+    solver.set_option("levels", levels);
+  solver.solve(system, control, value);
+  Outcome o;
+  o.report = solver.report();
+  o.pressure = asp_test::field_vector(system.state().pressure);
+  o.gap = asp_test::field_vector(system.state().gap);
+  o.penetration = system.state().penetration;
+  o.contact = system.contact_fraction();
+  o.energy = system.elastic_energy() + system.mean_mode_energy() + system.interaction_energy();
+  return o;
+}
+
+double largest_abs(const std::vector<double> &v) {
+  double m = 0.0;
+  for (double x : v) m = std::max(m, std::fabs(x));
+  return m;
+}
+
+// ---- restriction and prolongation ----------------------------------------------------------
+
+// A surface whose spectrum lies below the coarse grid's Nyquist wavevector restricts exactly:
+// coarse pixel (i, j) holds the fine height at (2i, 2j), to rounding (1e-15 of the heights,
+// a few FFT passes). A mode at the coarse Nyquist wavevector is dropped (see coarse_system.hpp).
+TEST(NestedGrids, RestrictionIsExactForBandLimitedHeightsAndDropsTheCoarseNyquist) {
+  const std::int64_t n = 32;
+  auto grid = asp_test::grid_2d(n, n, 1.0, 2.0);
+  std::vector<double> h(n * n), nyquist(n * n);
+  for (std::int64_t j = 0; j < n; ++j)
+    for (std::int64_t i = 0; i < n; ++i) {
+      const double x = 2 * pi * i / n, y = 2 * pi * j / n;
+      h[i + n * j] = 0.3 * std::cos(3 * x + 1.0) + 0.2 * std::sin(5 * x - 7 * y) +
+                     0.1 * std::cos(7 * y) + 0.05;
+      nyquist[i + n * j] = std::cos(8 * x);  // kx = 8 = (n/2)/2, the coarse Nyquist
+    }
+  asp::System fine(grid, 1.0);
+  fine.set_topography(h.data());
+  auto coarse = asp::coarse_system(fine);
+  ASSERT_EQ(coarse->grid().nx(), n / 2);
+  ASSERT_EQ(coarse->grid().ny(), n / 2);
+  EXPECT_EQ(coarse->grid().lx(), 1.0);
+  EXPECT_EQ(coarse->grid().ly(), 2.0);
+  EXPECT_EQ(coarse->substrate().k0(), fine.substrate().k0());
+  double worst = 0.0;
+  for (std::int64_t j = 0; j < n / 2; ++j)
+    for (std::int64_t i = 0; i < n / 2; ++i)
+      worst = std::max(worst, std::fabs(coarse->heights()[i + n / 2 * j] -
+                                        h[2 * i + n * 2 * j]));
+  EXPECT_LT(worst, 1e-14);
+
+  std::vector<double> restricted(n * n / 4);
+  asp::resample_field(*grid, coarse->grid(), nyquist.data(), restricted.data());
+  EXPECT_LT(largest_abs(restricted), 1e-14);
+}
+
+// Linear interpolation keeps the sign and, on a periodic grid, the mean of the pressure.
+TEST(NestedGrids, ProlongedPressureKeepsSignAndMean) {
+  const std::int64_t n = 16;
+  auto fine = asp_test::grid_2d(n, n, 1.0, 1.0);
+  auto coarse = asp_test::grid_2d(n / 2, n / 2, 1.0, 1.0);
+  std::vector<double> c(n * n / 4), f(n * n);
+  double mean = 0.0;
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    c[i] = (i * 7919) % 5 == 0 ? 0.0 : static_cast<double>((i * 104729) % 13);
+    mean += c[i] / c.size();
+  }
+  asp::prolong_pressure(*coarse, *fine, true, c.data(), f.data());
+  double fine_mean = 0.0;
+  for (double p : f) {
+    EXPECT_GE(p, 0.0);
+    fine_mean += p / f.size();
+  }
+  EXPECT_NEAR(fine_mean, mean, 1e-14 * mean);
+  EXPECT_EQ(f[2 + n * 4], c[1 + n / 2 * 2]);  // the fine pixel at a coarse one's corner
+}
+
+// ---- nested solves reach the plain solve's state -------------------------------------------
+
+// Westergaard's sinusoid in 1D (the scene of test_contact_oracles.cpp) with pk and bugnicourt
+// under load control, two levels below 512 pixels.
+TEST(NestedGrids, WestergaardNestedEqualsPlain) {
+  const std::int64_t n = 512;
+  const double h0 = 0.02;
+  auto grid = asp_test::grid_1d(n, 1.0);
+  std::vector<double> h(n);
+  asp::sinusoid_topography(*grid, h0, 1, 0, h.data());
+  const double mean = 0.3 * pi * h0;
+  for (const char *algorithm : {"pk", "bugnicourt"}) {
+    const Outcome plain = solve_scene(grid, h, asp::SubstrateKind::periodic, 0, 0, algorithm,
+                                      nullptr, Control::mean_pressure, mean, 0, 1e-10);
+    const Outcome nested = solve_scene(grid, h, asp::SubstrateKind::periodic, 0, 0, algorithm,
+                                       nullptr, Control::mean_pressure, mean, 2, 1e-10);
+    ASSERT_TRUE(plain.report.converged());
+    ASSERT_TRUE(nested.report.converged()) << algorithm;
+    const double peak = largest_abs(plain.pressure);
+    std::printf("Westergaard %s: %lld then %lld iterations, max dp/p %.1e\n", algorithm,
+                (long long)plain.report.iterations, (long long)nested.report.iterations,
+                asp_test::max_abs_difference(plain.pressure, nested.pressure) / peak);
+    // Both meet the tolerance 1e-10 (a residual relative to the reference pressure); their
+    // pressures differ by that residual through the inverse of the contact set's operator,
+    // measured below 1e-10 of the peak: 100 times that leaves room for rounding elsewhere.
+    EXPECT_EQ(nested.contact, plain.contact) << algorithm;
+    EXPECT_LT(asp_test::max_abs_difference(plain.pressure, nested.pressure), 1e-8 * peak)
+        << algorithm;
+  }
+}
+
+// Hertz's paraboloid (the scene of test_contact_oracles.cpp, 128^2 here) with each solver of
+// the hard wall under the controls it takes: pk and bugnicourt under load, bugnicourt on the
+// gap under mean-gap control and lbfgsb under penetration control (where the coarse levels
+// must keep the rigid body where it is, their highest height being lower), on the periodic
+// and the free substrate.
+struct NestedCase {
+  const char *algorithm;
+  const char *variable;
+  Control control;
+  asp::SubstrateKind substrate;
+};
+class NestedHertz : public ::testing::TestWithParam<NestedCase> {};
+
+TEST_P(NestedHertz, NestedEqualsPlain) {
+  const NestedCase c = GetParam();
+  const std::int64_t n = 128;
+  const double a = 1.0 / 12, radius = 1.0;
+  auto grid = asp_test::grid_2d(n, n, 1.0, 1.0);
+  std::vector<double> h(n * n);
+  asp::paraboloid_topography(*grid, radius, h.data());
+  double value = 4 * a * a * a / (3 * radius);
+  if (c.control != Control::mean_pressure) {
+    asp::System system(grid, 1.0, c.substrate);
+    system.set_topography(h.data());
+    asp::Solver pk("pk");
+    pk.set_option("tolerance", 1e-10);
+    pk.solve(system, Control::mean_pressure, value);
+    value = c.control == Control::penetration ? system.state().penetration : system.mean_gap();
+  }
+  const Outcome plain = solve_scene(grid, h, c.substrate, 0, 0, c.algorithm, c.variable,
+                                    c.control, value, 0, 1e-10);
+  const Outcome nested = solve_scene(grid, h, c.substrate, 0, 0, c.algorithm, c.variable,
+                                     c.control, value, 2, 1e-10);
+  ASSERT_TRUE(plain.report.converged());
+  ASSERT_TRUE(nested.report.converged());
+  const double peak = largest_abs(plain.pressure);
+  std::printf("Hertz: %lld then %lld iterations, max dp/p %.1e, d penetration %.1e\n",
+              (long long)plain.report.iterations, (long long)nested.report.iterations,
+              asp_test::max_abs_difference(plain.pressure, nested.pressure) / peak,
+              nested.penetration - plain.penetration);
+  // As for Westergaard: both meet the tolerance 1e-10; measured differences up to 5e-10 of
+  // the peak pressure and 1e-14 of the penetration (where it is not the one imposed).
+  EXPECT_EQ(nested.contact, plain.contact);
+  EXPECT_LT(asp_test::max_abs_difference(plain.pressure, nested.pressure), 1e-8 * peak);
+  EXPECT_NEAR(nested.penetration, plain.penetration, 1e-8 * std::fabs(plain.penetration));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Solvers, NestedHertz,
+    ::testing::Values(
+        NestedCase{"pk", nullptr, Control::mean_pressure, asp::SubstrateKind::periodic},
+        NestedCase{"pk", nullptr, Control::penetration, asp::SubstrateKind::periodic},
+        NestedCase{"bugnicourt", nullptr, Control::mean_pressure, asp::SubstrateKind::periodic},
+        NestedCase{"bugnicourt", "gap", Control::mean_gap, asp::SubstrateKind::periodic},
+        NestedCase{"lbfgsb", "gap", Control::penetration, asp::SubstrateKind::periodic},
+        NestedCase{"pk", nullptr, Control::mean_pressure, asp::SubstrateKind::free},
+        NestedCase{"bugnicourt", "gap", Control::penetration, asp::SubstrateKind::free}),
+    [](const ::testing::TestParamInfo<NestedCase> &info) {
+      return std::string(info.param.algorithm) +
+             (info.param.variable ? std::string("_") + info.param.variable : std::string()) +
+             "_" + asp::control_name(info.param.control) +
+             (info.param.substrate == asp::SubstrateKind::free ? "_free" : "");
+    });
+
+// ---- adhesion -------------------------------------------------------------------------------
+// The adhesive rough scenes of test_adhesion.cpp (64^2, ranges of 10 and 1 times the pixel's
+// compliance length, largest tensile stress 1 and 100 times the pressure scale) under
+// penetration control with bugnicourt on the gap. Adhesive problems can have several stable
+// states, and a solve from another start may find another: the nested solve must find the
+// plain one's (same contact set, pressures to the tolerance) or one of lower energy (elastic
+// plus interaction, what the solve minimises at a given penetration), said in the output.
+TEST(NestedGrids, AdhesiveRoughScenesReachThePlainStateOrALowerEnergy) {
+  auto grid = asp_test::grid_2d(64, 64, 1.0, 1.0);
+  const auto heights = asp_test::rough_surface(*grid, 9, 0.1);
+  int same = 0, lower = 0;
+  for (double range_over_l : {10.0, 1.0}) {
+    for (double stress_over_p : {1.0, 100.0}) {
+      for (double levels : {1.0, 2.0}) {
+        asp::System probe(grid, 1.0);
+        probe.set_topography(heights.data());
+        const double P = 0.05, l = P / probe.substrate().pixel_stiffness();
+        const double rho = range_over_l * l, work = stress_over_p * P * rho;
+        const double delta = 0.3 * probe.height_range();
+        const Outcome plain = solve_scene(grid, heights, asp::SubstrateKind::periodic, work, rho,
+                                          "bugnicourt", "gap", Control::penetration, delta, 0,
+                                          1e-8);
+        const Outcome nested = solve_scene(grid, heights, asp::SubstrateKind::periodic, work,
+                                           rho, "bugnicourt", "gap", Control::penetration,
+                                           delta, levels, 1e-8);
+        ASSERT_TRUE(plain.report.converged());
+        ASSERT_TRUE(nested.report.converged());
+        const double peak = largest_abs(plain.pressure);
+        const double dp = asp_test::max_abs_difference(plain.pressure, nested.pressure) / peak;
+        // The same state: the same contact set and pressures within 1e-6 of the peak (the
+        // tolerance 1e-8 through the adhesive operator, less well conditioned than the
+        // elastic one alone); otherwise an energy lower than the plain one's by more than
+        // its rounding (1e-12 of it).
+        const bool is_same = nested.contact == plain.contact && dp < 1e-6;
+        const bool is_lower = nested.energy < plain.energy - 1e-12 * std::fabs(plain.energy);
+        same += is_same;
+        lower += !is_same && is_lower;
+        std::printf("rho = %g l, w/rho = %g P, %g levels: %lld then %lld iterations, contact "
+                    "%.4f then %.4f, energy %.8e then %.8e: %s\n",
+                    range_over_l, stress_over_p, levels, (long long)plain.report.iterations,
+                    (long long)nested.report.iterations, plain.contact, nested.contact,
+                    plain.energy, nested.energy,
+                    is_same ? "the same state" : is_lower ? "a state of lower energy"
+                                                          : "A STATE OF HIGHER ENERGY");
+        EXPECT_TRUE(is_same || is_lower);
+      }
+    }
+  }
+  std::printf("%d of 8 the same state, %d of lower energy\n", same, lower);
+}
+
+// A soft wall (no hard wall: the prolonged gap is the pressure's own, unclipped) with the
+// unconstrained solvers, under penetration control and, for lbfgs_fourier, load control.
+TEST(NestedGrids, SoftWallNestedEqualsPlain) {
+  const std::int64_t n = 128;
+  auto grid = asp_test::grid_2d(n, n, 1.0, 1.0);
+  const auto h = asp_test::rough_surface(*grid, 13);
+  struct SoftCase {
+    const char *algorithm;
+    Control control;
+  };
+  for (const SoftCase &c : {SoftCase{"lbfgs_fourier", Control::penetration},
+                            SoftCase{"lbfgs_fourier", Control::mean_pressure},
+                            SoftCase{"lbfgs", Control::penetration}}) {
+    Outcome o[2];
+    for (int nested = 0; nested < 2; ++nested) {
+      asp::System system(grid, 1.0);
+      system.set_topography(h.data());
+      system.set_soft_wall(1e-2, 2.0 / n, 1e-4, 2.0 / n);
+      asp::Solver solver(c.algorithm);
+      solver.set_option("tolerance", 1e-10);
+      solver.set_option("levels", nested ? 2.0 : 0.0);
+      const double value =
+          c.control == Control::penetration ? 0.3 * system.height_range() : 0.005;
+      solver.solve(system, c.control, value);
+      ASSERT_TRUE(solver.report().converged()) << c.algorithm << " nested " << nested;
+      o[nested].pressure = asp_test::field_vector(system.state().pressure);
+      o[nested].report = solver.report();
+    }
+    const double dp = asp_test::max_abs_difference(o[0].pressure, o[1].pressure) /
+                      largest_abs(o[0].pressure);
+    std::printf("soft wall, %s, %s: %lld then %lld iterations, max dp/p %.1e\n", c.algorithm,
+                asp::control_name(c.control), (long long)o[0].report.iterations,
+                (long long)o[1].report.iterations, dp);
+    // As for the hard walls: both meet the tolerance 1e-10.
+    EXPECT_LT(dp, 1e-8) << c.algorithm;
+  }
+}
+
+// On a grid with threads, the coarse grids take the same threads, and a nested solve there
+// reaches the plain serial one's state (to the tolerance, as above: the threads' sums run in
+// another order).
+TEST(NestedGrids, ThreadedNestedSolveEqualsSerialPlain) {
+  auto serial = asp_test::grid_2d(128, 128, 1.0, 1.0);
+  auto threaded = asp_test::grid_2d(128, 128, 1.0, 1.0);
+  threaded->set_threads(2);
+  const auto h = asp_test::rough_surface(*serial, 11);
+  asp::System system(threaded, 1.0);
+  system.set_topography(h.data());
+  EXPECT_EQ(asp::coarse_system(system)->grid().threads(), 2);
+  const Outcome plain = solve_scene(serial, h, asp::SubstrateKind::periodic, 0, 0, "bugnicourt",
+                                    nullptr, Control::mean_pressure, 0.01, 0, 1e-10);
+  const Outcome nested = solve_scene(threaded, h, asp::SubstrateKind::periodic, 0, 0,
+                                     "bugnicourt", nullptr, Control::mean_pressure, 0.01,
+                                     asp::levels_auto, 1e-10);
+  ASSERT_TRUE(plain.report.converged());
+  ASSERT_TRUE(nested.report.converged());
+  EXPECT_EQ(nested.contact, plain.contact);
+  EXPECT_LT(asp_test::max_abs_difference(plain.pressure, nested.pressure),
+            1e-8 * largest_abs(plain.pressure));
+}
+
+// ---- what levels do and refuse -------------------------------------------------------------
+
+TEST(NestedGrids, AutoHalvesWhileBothSidesStayAt64) {
+  auto system_of = [](std::int64_t nx, std::int64_t ny) {
+    return asp::System(asp_test::grid_2d(nx, ny, 1.0, 1.0), 1.0);
+  };
+  EXPECT_EQ(asp::nested_levels(system_of(64, 64), asp::levels_auto), 0);
+  EXPECT_EQ(asp::nested_levels(system_of(128, 128), asp::levels_auto), 1);
+  EXPECT_EQ(asp::nested_levels(system_of(512, 256), asp::levels_auto), 2);
+  EXPECT_EQ(asp::nested_levels(system_of(384, 384), asp::levels_auto), 2);  // 96: odd halves
+  EXPECT_EQ(asp::nested_levels(system_of(130, 130), asp::levels_auto), 1);  // 65, odd
+  EXPECT_EQ(asp::nested_levels(system_of(126, 126), asp::levels_auto), 0);  // 63 < 64
+  EXPECT_EQ(asp::nested_levels(asp::System(asp_test::grid_1d(1024, 1.0), 1.0),
+                               asp::levels_auto),
+            4);
+}
+
+// An explicit count the grid cannot take is refused before anything changes, naming the
+// option and why; the same request is refused by check_supported (asp_solver_supports).
+TEST(NestedGrids, LevelsTheGridCannotTakeAreRefusedNamingTheOption) {
+  struct Refusal {
+    std::int64_t nx, ny;
+    double levels;
+    const char *why;
+  };
+  for (const Refusal &r : {Refusal{30, 32, 2, "odd size"}, Refusal{36, 36, 3, "odd size"},
+                           Refusal{32, 32, 3, "fewer than 8 a side"}}) {
+    auto grid = asp_test::grid_2d(r.nx, r.ny, 1.0, 1.0);
+    asp::System system(grid, 1.0);
+    const auto h = asp_test::rough_surface(*grid, 3);
+    system.set_topography(h.data());
+    const auto before = asp_test::field_vector(system.state().gap);
+    asp::Solver solver("pk");
+    solver.set_option("levels", r.levels);
+    try {
+      solver.check_supported(system, Control::mean_pressure);
+      ADD_FAILURE() << "check_supported took " << r.levels << " levels on " << r.nx;
+    } catch (const asp::Error &e) {
+      EXPECT_EQ(e.status(), asp::Status::unsupported);
+    }
+    try {
+      solver.solve(system, Control::mean_pressure, 0.01);
+      ADD_FAILURE() << "solved with " << r.levels << " levels on " << r.nx << " x " << r.ny;
+    } catch (const asp::Error &e) {
+      EXPECT_EQ(e.status(), asp::Status::unsupported);
+      const std::string m = e.what();
+      EXPECT_NE(m.find("option 'levels'"), std::string::npos) << m;
+      EXPECT_NE(m.find(r.why), std::string::npos) << m;
+    }
+    EXPECT_FALSE(solver.report().available);
+    EXPECT_EQ(asp_test::field_vector(system.state().gap), before);
+  }
+}
+
+TEST(NestedGrids, LevelsTakeACountOrAutoAndReadBack) {
+  asp::Solver solver("bugnicourt");
+  EXPECT_EQ(solver.option("levels"), 0.0);
+  solver.set_option("levels", 3.0);
+  EXPECT_EQ(solver.option("levels"), 3.0);
+  solver.set_option("levels", std::string("auto"));
+  EXPECT_EQ(solver.option("levels"), asp::levels_auto);
+  EXPECT_EQ(solver.option_text("levels"), "auto");
+  for (double bad : {-1.0, 1.5, 17.0}) {
+    try {
+      solver.set_option("levels", bad);
+      ADD_FAILURE() << bad;
+    } catch (const asp::Error &e) {
+      EXPECT_EQ(e.status(), asp::Status::invalid_argument);
+    }
+  }
+  try {
+    solver.set_option("levels", std::string("many"));
+    ADD_FAILURE();
+  } catch (const asp::Error &e) {
+    EXPECT_NE(std::string(e.what()).find("'auto'"), std::string::npos) << e.what();
+  }
+  solver.set_option("levels", 2.0);
+  try {
+    solver.option_text("levels");
+    ADD_FAILURE();
+  } catch (const asp::Error &e) {
+    EXPECT_EQ(e.status(), asp::Status::invalid_argument);
+  }
+  // A choice option takes no word of a number's.
+  try {
+    solver.set_option("variable", std::string("auto"));
+    ADD_FAILURE();
+  } catch (const asp::Error &e) {
+    EXPECT_EQ(e.status(), asp::Status::invalid_argument);
+  }
+}
+
+// A state with pressure is a warm start, kept: a converged one is solved again in no
+// iteration, with levels as without. The report counts the finest grid's iterations and the
+// transforms of all levels, the coarse ones' weighted by their share of the pixels.
+TEST(NestedGrids, WarmStartsAreKeptAndTheReportCountsTheFinestGrid) {
+  auto grid = asp_test::grid_2d(128, 128, 1.0, 1.0);
+  const auto h = asp_test::rough_surface(*grid, 5);
+  asp::System system(grid, 1.0);
+  system.set_topography(h.data());
+  asp::Solver solver("pk");
+  solver.set_option("levels", std::string("auto"));
+  solver.set_history(true);
+  solver.solve(system, Control::mean_pressure, 0.01);
+  ASSERT_TRUE(solver.report().converged());
+  const asp::SolveReport nested = solver.report();
+  EXPECT_EQ(static_cast<std::int64_t>(solver.history().size()), nested.iterations + 1);
+  // The finest grid's transforms alone: its last history row's count.
+  const auto finest_transforms = static_cast<std::int64_t>(
+      solver.history().back()[static_cast<int>(asp::HistoryColumn::transforms)]);
+  EXPECT_GT(nested.transforms, finest_transforms);
+  solver.solve(system, Control::mean_pressure, 0.01);
+  EXPECT_EQ(solver.report().iterations, 0);
+  EXPECT_EQ(solver.report().termination, asp::Termination::converged);
+}
+
+}  // namespace
