@@ -11,6 +11,7 @@
 
 #include "core/error.hpp"
 #include "physics/coarse_system.hpp"
+#include "physics/stiffness_law.hpp"
 #include "scene.hpp"
 #include "solvers/nested_grids.hpp"
 
@@ -323,6 +324,39 @@ TEST(NestedGrids, ThreadedNestedSolveEqualsSerialPlain) {
   EXPECT_EQ(nested.contact, plain.contact);
   EXPECT_LT(asp_test::max_abs_difference(plain.pressure, nested.pressure),
             1e-8 * largest_abs(plain.pressure));
+}
+
+// A coarse level keeps the substrate's stiffness law: on an elastic layer (thickness a tenth
+// of the box, so that its K~(q) differs from the half-space's at every wavevector the surface
+// holds) the coarse system has the layer's own K~(0) and law, and the nested solve reaches
+// the plain one's state (to the tolerance, as above). A coarse half-space would start the fine
+// solve from another body's contact; the state would still agree, so the law is checked too.
+TEST(NestedGrids, ALayerKeepsItsLawOnTheCoarseLevels) {
+  auto grid = asp_test::grid_2d(128, 128, 1.0, 1.0);
+  const auto h = asp_test::rough_surface(*grid, 11);
+  const auto layer = [&]() {
+    auto system = std::make_unique<asp::System>(
+        grid, std::make_unique<asp::LayerLaw>(1.0, 0.3, 0.1));
+    system->set_topography(h.data());
+    return system;
+  };
+  auto fine = layer();
+  auto coarse = asp::coarse_system(*fine);
+  EXPECT_EQ(coarse->substrate().mean_stiffness(), asp::MeanStiffness::physical);
+  EXPECT_EQ(coarse->substrate().k0(), fine->substrate().k0());
+  EXPECT_EQ(std::string(coarse->substrate().name()), std::string(fine->substrate().name()));
+  auto plain = layer(), nested = layer();
+  asp::Solver solver("bugnicourt");
+  solver.set_option("tolerance", 1e-10);
+  solver.solve(*plain, Control::mean_pressure, 0.01);
+  ASSERT_TRUE(solver.report().converged());
+  solver.set_option("levels", std::string("auto"));
+  solver.solve(*nested, Control::mean_pressure, 0.01);
+  ASSERT_TRUE(solver.report().converged());
+  const auto p_plain = asp_test::field_vector(plain->state().pressure);
+  const auto p_nested = asp_test::field_vector(nested->state().pressure);
+  EXPECT_EQ(nested->contact_fraction(), plain->contact_fraction());
+  EXPECT_LT(asp_test::max_abs_difference(p_plain, p_nested), 1e-8 * largest_abs(p_plain));
 }
 
 // ---- what levels do and refuse -------------------------------------------------------------
