@@ -275,7 +275,8 @@ DualFormulation::Gap DualFormulation::evaluate_gap(bool with_objective) {
   return gap;
 }
 
-double DualFormulation::update_direction(double beta) {
+template <class Source>
+double DualFormulation::update_direction_from(Source source, double beta) {
   double *t = direction_.data();
   const double *g = state_.gap.data();
   const double *p = state_.pressure.data();
@@ -292,7 +293,7 @@ double DualFormulation::update_direction(double beta) {
       grid_.reductions(), n_, [&](std::int64_t i, double *sum, double &max) {
         const double gi = g[i] - shift;
         const bool in = p[i] > 0.0;
-        const double ti = in ? gi + beta * (t[i] - t_mean) : 0.0;
+        const double ti = in ? source(i, gi) + beta * (t[i] - t_mean) : 0.0;
         t[i] = ti;
         const double v = in ? std::fabs(gi) : (gi > 0.0 ? 0.0 : -gi);
         max = max > v ? max : v;
@@ -301,6 +302,16 @@ double DualFormulation::update_direction(double beta) {
       });
   descent_ = r[0];
   return std::isfinite(r[1]) ? r[2] : r[1];
+}
+
+double DualFormulation::update_direction(double beta) {
+  return update_direction_from([](std::int64_t, double gi) { return gi; }, beta);
+}
+
+double DualFormulation::update_preconditioned_direction(double beta) {
+  const double *z = preconditioned_.data();
+  const double z_mean = preconditioned_mean_;
+  return update_direction_from([&](std::int64_t i, double) { return z[i] - z_mean; }, beta);
 }
 
 double DualFormulation::curvature() {

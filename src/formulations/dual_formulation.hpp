@@ -117,6 +117,11 @@ class DualFormulation final : public ScaledFormulation {
   // returns sum_i p_i u_i, p the pressure array and u the scaled displacement it makes.
   double gap_of_iterate(double *gap, bool with_energy);
   void load_state();
+  // The pass of update_direction and update_preconditioned_direction: t = source(i, g_i) +
+  // beta t_old on the contact set, 0 elsewhere, g_i the centred gap; the descent g.t into
+  // descent_; returns the error of the current iterate.
+  template <class Source>
+  double update_direction_from(Source source, double beta);
 
   double compliance_factor_;  // k: turns the substrate's K^-1 into the scaled one
 

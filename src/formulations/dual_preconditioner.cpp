@@ -1,7 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // The Fourier preconditioner of Polonsky & Keer's iteration (see dual_formulation.hpp).
-#include <cmath>
-
 #include "core/loops.hpp"
 #include "formulations/dual_formulation.hpp"
 
@@ -33,31 +31,6 @@ double DualFormulation::precondition() {
       control_ == Control::mean_pressure && contacts_ > 0.0 ? sums[0] / contacts_ : 0.0;
   // r.(z - mean) exactly, although sum r vanishes only up to rounding.
   return sums[1] - preconditioned_mean_ * sums[2];
-}
-
-double DualFormulation::update_preconditioned_direction(double beta) {
-  double *t = direction_.data();
-  const double *z = preconditioned_.data();
-  const double *g = state_.gap.data();
-  const double *p = state_.pressure.data();
-  const double shift = shift_, z_mean = preconditioned_mean_;
-  const double t_mean = control_ == Control::mean_pressure && contacts_ > 0.0
-                            ? direction_sum_on_contact_ / contacts_
-                            : 0.0;
-  // As update_direction, one branch-free pass: the error from the gap, the direction from z.
-  const auto r = loops::sums_and_max<2>(
-      grid_.reductions(), n_, [&](std::int64_t i, double *sum, double &max) {
-        const double gi = g[i] - shift;
-        const bool in = p[i] > 0.0;
-        const double ti = in ? (z[i] - z_mean) + beta * (t[i] - t_mean) : 0.0;
-        t[i] = ti;
-        const double v = in ? std::fabs(gi) : (gi > 0.0 ? 0.0 : -gi);
-        max = max > v ? max : v;
-        sum[0] += gi * ti;
-        sum[1] += v;
-      });
-  descent_ = r[0];
-  return std::isfinite(r[1]) ? r[2] : r[1];
 }
 
 bool DualFormulation::precondition(double *z) {
