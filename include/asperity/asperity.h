@@ -722,10 +722,10 @@ typedef struct asp_solver asp_solver;
  *                 (the inverse of the elastic operator of the objective, the compliance on
  *                 the gap or the stiffness on the pressure, applied to the projected
  *                 gradient: the same solution in 2 to 6 times fewer iterations, each costing
- *                 one more FFT pair and 8 more bytes per pixel), "none" (as published), or
- *                 "auto" (the default): "fourier" without adhesion, "none" with it, where
- *                 the adhesive problem has several stable states and the two paths can
- *                 reach different ones.
+ *                 one more FFT pair; 12 more bytes per pixel, 24 on a free substrate),
+ *                 "none" (as published), or "auto" (the default): "fourier" without
+ *                 adhesion, "none" with it, where the adhesive problem has several stable
+ *                 states and the two paths can reach different ones.
  *                 Faster than "pk" near full contact. Stops as stalled also when it has no
  *                 descent direction left.
  *   "lbfgsb"      Byrd, Lu, Nocedal & Zhu's L-BFGS-B (1995; hard wall, periodic or free

@@ -239,7 +239,8 @@ int run_sweep(Session &session) {
     const SolveReport r =
         solve_step(values[k], unloading ? "unloading" : "loading", unloading ? &down : &up);
     if (k + 1 == loading) turn_penetration = r.penetration;
-    if (unloading) learn(values[k], r);
+    // The turning step counts: with a single loading value it is the only stable one.
+    if (unloading || k + 1 == loading) learn(values[k], r);
   }
   if (search_pull_off && !cancelled) {
     // On into tension, step by step, until a load separates the surfaces.

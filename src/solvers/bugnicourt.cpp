@@ -346,8 +346,9 @@ AlgorithmSpec bugnicourt_algorithm() {
                    "fourier: preconditioned by the inverse of the elastic operator of the "
                    "objective (the compliance on the gap, the stiffness on the pressure) "
                    "applied to the projected gradient, one more transform pair per iteration "
-                   "and 8 more bytes per pixel for iterations that grow far less with the "
-                   "grid; none: the conjugate gradient as published; auto: fourier without "
+                   "and 12 more bytes per pixel (its vector, and the substrate's inverse "
+                   "operator on the half spectrum; 24 on a free substrate) for iterations "
+                   "that grow far less with the grid; none: the conjugate gradient as published; auto: fourier without "
                    "adhesion, none with it (the adhesive problem has several stable states, "
                    "and the two paths can reach different ones)"}};
   spec.run = run;

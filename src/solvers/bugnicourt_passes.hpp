@@ -137,7 +137,8 @@ class BugnicourtPasses {
       const double r = projected(i, kept);
       z[i] = kept ? r : 0.0;
     });
-    f_.precondition(z);
+    if (!f_.precondition(z))
+      throw Error(Status::internal, "bugnicourt: the formulation offers no preconditioner");
     // Over N: its count, the sums of z, of z h and of h.
     const auto s = loops::sums<4>(reductions_, n_, [&](std::int64_t i, double *t) {
       bool kept;

@@ -101,8 +101,15 @@ void cascade(const AlgorithmSpec &algorithm, const OptionValues &options, System
   work.iterations += monitor.iterations();
   work.transforms += static_cast<double>(monitor.transforms()) *
                      static_cast<double>(coarse->grid().n_pixels()) / finest_pixels;
-  // A breakdown leaves the coarse state reset: nothing to start from.
-  if (monitor.termination() != Termination::breakdown) prolong_state(*coarse, fine);
+  // A breakdown leaves the coarse state reset, and a coarse grid that separated under a
+  // tensile load leaves surfaces apart: nothing to start from (the finer grid then starts
+  // cold, touching at its highest point, and finds its own stable state or its own
+  // separation).
+  const Termination ended = monitor.termination();
+  if (ended != Termination::breakdown && ended != Termination::separated) {
+    prolong_state(*coarse, fine);
+    if (depth == 0) work.prolonged = true;
+  }
 }
 
 }  // namespace

@@ -33,6 +33,7 @@ std::int64_t nested_levels(const System &system, double levels);
 struct CoarseWork {
   std::int64_t iterations = 0;
   double transforms = 0.0;
+  bool prolonged = false;  // whether the system's state is now a prolonged coarse solution
 };
 
 // Solves `levels` coarser levels of the system under the control (at the same mean pressure

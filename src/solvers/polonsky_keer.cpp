@@ -76,7 +76,8 @@ AlgorithmSpec polonsky_keer_algorithm() {
                    {"auto", "fourier", "none"},
                    "fourier: preconditioned by the substrate's stiffness (E*|q|/2 on a "
                    "periodic half-space) applied to the gap on the contact set, one more "
-                   "transform pair per iteration and 8 more bytes per pixel for iterations "
+                   "transform pair per iteration and 12 more bytes per pixel (24 on a free "
+                   "substrate) for iterations "
                    "that grow far less with the grid; none: Polonsky & Keer's conjugate "
                    "gradient as published; auto: fourier (pk's problem is always the convex "
                    "one of the hard wall; the choice is there as for bugnicourt)"}};

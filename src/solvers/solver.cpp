@@ -179,6 +179,9 @@ void Solver::solve(System &system, Control control, double value) {
   CoarseWork coarse;
   try {
     coarse = solve_coarse_levels(algorithm_, options_, system, control, value, levels, settings);
+    // A prolonged coarse state is the solve's, not the caller's: a failure from here on
+    // resets it (a nested solve starts only from a state without pressure, a cold one).
+    if (coarse.prolonged) system.set_state_held_by_solve(true);
     algorithm_.run(system, control, value, options_, monitor);
   } catch (...) {
     if (keep_start) {

@@ -61,6 +61,17 @@ for algorithm in bugnicourt lbfgsb; do
 done
 expect "bugnicourt and lbfgsb find the same bracket" [ "$bracket_bugnicourt" = "$bracket_lbfgsb" ]
 
+# A sweep of a single load still searches the pull-off: its one loading step is the stable
+# state the search starts from.
+sed 's/^sweep = .*/sweep = { values = [0.004] }/' "$scene" > one_value.toml
+"$cli" sweep one_value.toml --planning estimate --no-plots --output one_value \
+  > one_value.out 2> one_value.err < /dev/null
+rc=$?
+expect "a one-load sweep exits 0 (stderr: $(cat one_value.err))" [ "$rc" -eq 0 ]
+read -r stable separating <<< "$(pull_off_of one_value.out)"
+expect "a one-load sweep finds the pull-off ($(grep '^pull-off' one_value.out))" \
+  within "${stable:-0}" -9.892e-3 -7.419e-3
+
 # A wavy surface under increasing load: partial contact up to a load where its branch ends,
 # then full contact. The step that jumped is the loading step with the largest move in
 # penetration, the first in full contact; its note gives the two steps' figures as sweep.csv

@@ -194,6 +194,11 @@ TEST(FourierPreconditioner, FewerIterationsOnAFineRoughScene) {
       EXPECT_LE(static_cast<double>(fourier.report.iterations),
                 0.8 * static_cast<double>(plain.report.iterations))
           << variant.name << ", tolerance " << tol;
+      // The default, "auto", is "fourier" on the hard wall without adhesion.
+      const Outcome automatic =
+          solve(system, variant, "auto", asp::Control::mean_pressure, 0.002, tol);
+      EXPECT_EQ(automatic.report.iterations, fourier.report.iterations) << variant.name;
+      EXPECT_EQ(automatic.pressure, fourier.pressure) << variant.name;
     }
   }
 }
