@@ -186,13 +186,16 @@ std::array<double, K + 1> sums_and_max(const Reductions &reductions, std::int64_
 }
 
 // count sums, with count known only at run time: body(begin, end, sum) adds the terms of the
-// entries [begin, end) to sum[0..count-1]. The entries come in blocks small enough to stay
-// in the first-level cache, so that a body may pass over its block several times (once per
-// stored vector, say) while every array is read from memory once.
-template <class Body>
+// entries [begin, end) to sum[0..count-1]. The entries come in blocks of at most Block, small
+// enough to stay in a cache, so that a body may pass over its block several times (once per
+// stored vector, say) while every array is read from memory once. The default keeps a few
+// arrays' blocks in the first-level cache; a body that sweeps many other arrays once per
+// block wants longer ones, which the prefetchers follow further.
+constexpr std::int64_t block_entries = 256;
+template <std::int64_t Block = block_entries, class Body>
 void block_sums(const Reductions &reductions, std::int64_t n, int count, double *sum,
                 Body &&body) {
-  constexpr std::int64_t block = 256;
+  constexpr std::int64_t block = Block;
   const std::vector<double> total = reduce_in_parts(
       n, std::vector<double>(static_cast<std::size_t>(count), 0.0),
       [&](std::int64_t begin, std::int64_t end, std::vector<double> &part) {

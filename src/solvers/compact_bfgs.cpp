@@ -68,28 +68,32 @@ bool CompactBfgs::add_pair(const double *x, Field &x_old, const double *g, Field
   const int k = k_;
   const int own = 6 * k;
   std::vector<double> sums(static_cast<std::size_t>(own + 5));
-  double *s = x_old.data();
-  double *y = g_old.data();
   std::vector<const double *> stored_s(static_cast<std::size_t>(k)), stored_y(stored_s);
   for (int j = 0; j < k; ++j) {
     stored_s[j] = s_[slot(j)].data();
     stored_y[j] = y_[slot(j)].data();
   }
   // One pass: each block of s and y is formed, then met by every stored pair while it is in
-  // cache, so that each field is read once.
-  loops::block_sums(reductions_, n_, own + 5, sums.data(),
+  // cache, so that each field is read once. The kernel works on its own copies of the
+  // pointers: through the captured references GCC vectorises the products as gathers,
+  // at twice the instructions.
+  loops::block_sums<2048>(reductions_, n_, own + 5, sums.data(),
                     [&](std::int64_t begin, std::int64_t end, double *sum) {
+                      const double *__restrict xn = x;
+                      const double *__restrict gn = g;
+                      double *__restrict s = x_old.data();
+                      double *__restrict y = g_old.data();
                       double ss = 0.0, sy = 0.0, yy = 0.0, gs = 0.0, gy = 0.0;
 #pragma omp simd reduction(+ : ss, sy, yy, gs, gy)
                       for (std::int64_t i = begin; i < end; ++i) {
-                        const double si = x[i] - s[i], yi = g[i] - y[i];
+                        const double si = xn[i] - s[i], yi = gn[i] - y[i];
                         s[i] = si;
                         y[i] = yi;
                         ss += si * si;
                         sy += si * yi;
                         yy += yi * yi;
-                        gs += g[i] * si;
-                        gy += g[i] * yi;
+                        gs += gn[i] * si;
+                        gy += gn[i] * yi;
                       }
                       sum[own] += ss;
                       sum[own + 1] += sy;
@@ -97,7 +101,8 @@ bool CompactBfgs::add_pair(const double *x, Field &x_old, const double *g, Field
                       sum[own + 3] += gs;
                       sum[own + 4] += gy;
                       for (int j = 0; j < k; ++j) {
-                        const double *sj = stored_s[j], *yj = stored_y[j];
+                        const double *__restrict sj = stored_s[j];
+                        const double *__restrict yj = stored_y[j];
                         double a = 0.0, b = 0.0, c = 0.0, d = 0.0, e = 0.0, f = 0.0;
 #pragma omp simd reduction(+ : a, b, c, d, e, f)
                         for (std::int64_t i = begin; i < end; ++i) {
@@ -105,8 +110,8 @@ bool CompactBfgs::add_pair(const double *x, Field &x_old, const double *g, Field
                           b += s[i] * yj[i];
                           c += y[i] * sj[i];
                           d += y[i] * yj[i];
-                          e += g[i] * sj[i];
-                          f += g[i] * yj[i];
+                          e += gn[i] * sj[i];
+                          f += gn[i] * yj[i];
                         }
                         double *out = sum + 6 * j;
                         out[0] += a;

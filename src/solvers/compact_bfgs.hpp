@@ -30,8 +30,10 @@ class CompactBfgs {
   int columns() const { return 2 * k_; }
   double theta() const { return theta_; }
 
-  // Entry i of column j of W (j < 2k).
+  // Entry i of column j of W (j < 2k), which is scale(j) times column(j)[i].
   double entry(int j, std::int64_t i) const { return scale_[j] * column_[j][i]; }
+  const double *column(int j) const { return column_[j]; }
+  double scale(int j) const { return scale_[j]; }
   // w_i^T v for the 2k-vector v: row i of W times v.
   double row_times(std::int64_t i, const double *v) const {
     double sum = 0.0;

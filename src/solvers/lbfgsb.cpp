@@ -2,6 +2,7 @@
 #include "solvers/lbfgsb.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -36,39 +37,55 @@ inline bool at_bound(double x, double g, double lower, double t) {
   return g > 0.0 && x - lower <= t * g;
 }
 
-// Over the unknowns of a set (in(i)) whose size over all processes is about `size` (of
-// `total` unknowns; n here): the sums of g_i w_i into a
-// (2k entries) and, if gram is not null, of w_i w_i^T into gram (2k x 2k), with w_i row i of
-// W. They are summed over the set or over its complement, whichever is smaller, the latter
-// subtracted from the totals W^T g and W^T W that the compact matrix keeps: so that only
-// the few unknowns in (or out of) contact are visited.
-template <class In>
-void sums_over_set(In in, std::int64_t size, std::int64_t total, std::int64_t n,
-                   const double *g, const CompactBfgs &bfgs, const Reductions &reductions,
-                   Indices &list, double *a, double *gram) {
+// Whether a set of about `size` of `total` unknowns (over all processes) is better listed by
+// its complement: the same choice on every process, from global counts.
+bool list_complement(std::int64_t size, std::int64_t total) { return size > total / 2; }
+
+// Over the unknowns of a set, listed (in increasing order) either themselves or, if
+// `complement`, by the unknowns outside it: the sums of g_i w_i into a (2k entries) and of
+// w_i w_i^T into gram (2k x 2k), with w_i row i of W. A complement's
+// sums are subtracted from the totals W^T g and W^T W that the compact matrix keeps: so that
+// only the few unknowns in (or out of) contact are visited.
+void sums_over_list(const Indices &list, bool complement, const double *g,
+                    const CompactBfgs &bfgs, const Reductions &reductions, double *a,
+                    double *gram) {
   const int k2 = bfgs.columns();
-  // The same choice on every process, from global counts.
-  const bool complement = size > total / 2;
-  list.clear();
-  loops::select(n, [&](std::int64_t i) { return in(i) != complement; }, list);
   const std::int64_t listed = static_cast<std::int64_t>(list.size());
-  const int count = k2 + (gram != nullptr ? k2 * k2 : 0);
+  const int count = k2 + k2 * k2;
   std::vector<double> sums(static_cast<std::size_t>(count));
-  std::vector<double> w(static_cast<std::size_t>(k2));
+  // A block of listed unknowns at a time: each column's entries there are gathered in index
+  // order (one sparse sweep per column, which the prefetchers follow, rather than 2k
+  // scattered reads per unknown), and the products are then dot products over the block.
+  constexpr std::int64_t block = loops::block_entries;
   loops::block_sums(reductions, listed, count, sums.data(),
                     [&](std::int64_t begin, std::int64_t end, double *sum) {
-                      for (std::int64_t position = begin; position < end; ++position) {
-                        const std::int64_t i = list[static_cast<std::size_t>(position)];
-                        for (int j = 0; j < k2; ++j) w[j] = bfgs.entry(j, i);
-                        for (int j = 0; j < k2; ++j) sum[j] += g[i] * w[j];
-                        if (gram == nullptr) continue;
-                        for (int r = 0; r < k2; ++r)
-                          for (int c = r; c < k2; ++c) sum[k2 + r * k2 + c] += w[r] * w[c];
+                      const std::int64_t length = end - begin;
+                      const std::int64_t *at = list.data() + begin;
+                      std::vector<double> rows(static_cast<std::size_t>((k2 + 1) * block));
+                      double *gl = rows.data() + static_cast<std::size_t>(k2) * block;
+                      for (std::int64_t p = 0; p < length; ++p) gl[p] = g[at[p]];
+                      for (int j = 0; j < k2; ++j) {
+                        const double *column = bfgs.column(j);
+                        double *wj = rows.data() + static_cast<std::size_t>(j) * block;
+                        for (std::int64_t p = 0; p < length; ++p) wj[p] = column[at[p]];
                       }
+                      const auto dot_block = [&](const double *a, const double *b) {
+                        double total = 0.0;
+#pragma omp simd reduction(+ : total)
+                        for (std::int64_t p = 0; p < length; ++p) total += a[p] * b[p];
+                        return total;
+                      };
+                      const auto row = [&](int j) {
+                        return rows.data() + static_cast<std::size_t>(j) * block;
+                      };
+                      for (int j = 0; j < k2; ++j) sum[j] += bfgs.scale(j) * dot_block(gl, row(j));
+                      for (int r = 0; r < k2; ++r)
+                        for (int c = r; c < k2; ++c)
+                          sum[k2 + r * k2 + c] +=
+                              bfgs.scale(r) * bfgs.scale(c) * dot_block(row(r), row(c));
                     });
   const std::vector<double> &wtg = bfgs.times_gradient(), &wtw = bfgs.gram();
   for (int j = 0; j < k2; ++j) a[j] = complement ? wtg[j] - sums[j] : sums[j];
-  if (gram == nullptr) return;
   for (int r = 0; r < k2; ++r)
     for (int c = r; c < k2; ++c) {
       const std::size_t rc = static_cast<std::size_t>(r) * k2 + c;
@@ -110,31 +127,38 @@ CauchyPoint generalized_cauchy_point(const double *x, const double *g, std::int6
   const auto total = static_cast<std::int64_t>(unknowns);
   double slope = -start[1];
   cauchy.at_bound = held;
-  if (!(slope < 0.0)) return cauchy;  // the path does not move: x is its own Cauchy point
-  // M p and M c are carried along with p and c, so that a segment needs one product with M.
-  std::vector<double> p(size), mp(size), mc(size, 0.0), w(size), mw(size);
-  if (k2 > 0) {
-    sums_over_set([&](std::int64_t i) { return !at_bound(x[i], g[i], bound(i), 0.0); },
-                  total - held, total, n, g, bfgs, reductions, list, p.data(), nullptr);
-    for (double &v : p) v = -v;
-    bfgs.times_middle(p.data(), mp.data());
+  // One pass lists the unknowns off the bound (or those on it, if fewer), for the sums over
+  // the free set, and puts the breakpoints t_i = (x_i - lower)/g_i in a heap, smallest
+  // first.
+  const bool complement = list_complement(total - held, total);
+  list.clear();
+  heap.clear();
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (k2 > 0 && at_bound(x[i], g[i], bound(i), 0.0) == complement) list.push_back(i);
+    if (g[i] > 0.0 && x[i] > bound(i)) {
+      const double breakpoint = (x[i] - bound(i)) / g[i];
+      if (std::isfinite(breakpoint)) heap.push_back({breakpoint, i});
+    }
   }
+  const auto later = [](const Breakpoint &a, const Breakpoint &b) { return a.t > b.t; };
+  std::make_heap(heap.begin(), heap.end(), later);
+  cauchy.listed_free = k2 > 0 && !complement;
+  cauchy.free_gradient.assign(size, 0.0);
+  cauchy.free_gram.assign(size * size, 0.0);
+  if (k2 > 0)
+    sums_over_list(list, complement, g, bfgs, reductions, cauchy.free_gradient.data(),
+                   cauchy.free_gram.data());
+  if (!(slope < 0.0)) return cauchy;  // the path does not move: x is its own Cauchy point
+
+  // M p and M c are carried along with p and c, so that a segment needs one product with M.
+  // p = W^T d = -(the sum of g_i w_i over the free set).
+  std::vector<double> p(size), mp(size), mc(size, 0.0), w(size), mw(size);
+  for (std::size_t j = 0; j < size; ++j) p[j] = -cauchy.free_gradient[j];
+  if (k2 > 0) bfgs.times_middle(p.data(), mp.data());
   // f'' = d.B d = -theta f' - p.M p.
   double curvature = -theta * slope - dot(p, mp);
   const double initial_curvature = curvature;
   double to_minimum = -slope / curvature;
-
-  // The breakpoints in a heap, smallest first.
-  const auto later = [](const Breakpoint &a, const Breakpoint &b) { return a.t > b.t; };
-  list.clear();
-  loops::select(n,
-                [&](std::int64_t i) {
-                  return g[i] > 0.0 && x[i] > bound(i) && std::isfinite((x[i] - bound(i)) / g[i]);
-                },
-                list);
-  heap.clear();
-  for (std::int64_t i : list) heap.push_back({(x[i] - bound(i)) / g[i], i});
-  std::make_heap(heap.begin(), heap.end(), later);
 
   // Segment after segment, until the minimum of the model lies inside one. The next
   // breakpoint is the smallest over all processes: each offers its own smallest, with what
@@ -174,13 +198,17 @@ CauchyPoint generalized_cauchy_point(const double *x, const double *g, std::int6
     for (std::size_t j = 0; j < size; ++j) {
       p[j] += gb * w[j];
       mp[j] += gb * mw[j];
+      for (std::size_t c = 0; c < size; ++c) cauchy.free_gram[j * size + c] -= w[j] * w[c];
     }
     to_minimum = -slope / curvature;
     t = next;
   }
   to_minimum = std::max(to_minimum, 0.0);
   cauchy.t = t + to_minimum;
-  for (std::size_t j = 0; j < size; ++j) cauchy.c[j] += to_minimum * p[j];
+  for (std::size_t j = 0; j < size; ++j) {
+    cauchy.c[j] += to_minimum * p[j];
+    cauchy.free_gradient[j] = -p[j];
+  }
   return cauchy;
 }
 
@@ -262,17 +290,14 @@ class Lbfgsb {
   void subspace_minimisation(const CauchyPoint &cauchy) {
     const int k2 = bfgs_.columns();
     const double theta = bfgs_.theta(), t = cauchy.t;
-    const double *x = x_, *g = g_.data();
     const auto size = static_cast<std::size_t>(k2);
     const std::int64_t free_count = total_ - cauchy.at_bound;
-    const auto fixed = [&](std::int64_t i) { return at_bound(x[i], g[i], bound(i), t); };
     u_.assign(size, 0.0);
     if (k2 > 0) {
       // W^T Z r = (1 - theta t) sum_free g_i w_i - (Z^T W)^T Z^T W M c, since on the free
       // set x_cauchy - x = -t g.
-      std::vector<double> a(size), gram(size * size), mc(size), rhs(size), v(size);
-      sums_over_set([&](std::int64_t i) { return !fixed(i); }, free_count, total_, n_, g,
-                    bfgs_, reductions_, list_, a.data(), gram.data());
+      const std::vector<double> &a = cauchy.free_gradient, &gram = cauchy.free_gram;
+      std::vector<double> mc(size), rhs(size), v(size);
       bfgs_.times_middle(cauchy.c.data(), mc.data());
       for (std::size_t r = 0; r < size; ++r) {
         double kmc = 0.0;
@@ -298,31 +323,61 @@ class Lbfgsb {
     if (!project_subspace_step(cauchy, free_count)) backtrack_subspace_step(cauchy);
   }
 
-  // x_bar projected onto the bound: d = max(x_bar, lower) - x. Returns whether d is a
-  // descent direction (g.d < 0). The model's correction w_i.u is added over the free
-  // unknowns only: in one pass with the rest if they are many, from a list if they are few.
+  // x_bar projected onto the bound: d = max(x_bar, lower) - x, x_old <- x, with the sums
+  // finish_direction() forms, in the same pass. Returns whether d is a descent direction
+  // (g.d < 0). The model's correction w_i.u is added over the free unknowns only: in the pass
+  // if they are many; from the list if they are few, the pass then finishing the unknowns on
+  // the bound and the list the free ones.
   bool project_subspace_step(const CauchyPoint &cauchy, std::int64_t free_count) {
     const int k2 = bfgs_.columns();
     const double inverse_theta = 1.0 / bfgs_.theta(), t = cauchy.t;
     const double *x = x_, *g = g_.data(), *u = u_.data();
-    double *d = d_;
-    // The list of free unknowns, when they are few, is the one the subspace sums made.
-    const bool listed = k2 > 0 && free_count <= total_ / 2;
-    // d holds x_bar before its projection; with a list, without w_i.u yet.
-    const CompactBfgs &bfgs = bfgs_;
-    if (k2 == 0 || listed) {
-      loops::for_each(n_, [&](std::int64_t i) {
-        d[i] = at_bound(x[i], g[i], bound(i), t) ? bound(i) : x[i] - g[i] * inverse_theta;
-      });
-      if (listed)
-        for (std::int64_t i : list_) d[i] += bfgs.row_times(i, u);
-    } else {
-      loops::for_each(n_, [&](std::int64_t i) {
-        d[i] = at_bound(x[i], g[i], bound(i), t) ? bound(i)
-                                               : x[i] - g[i] * inverse_theta + bfgs.row_times(i, u);
-      });
+    double *d = d_, *x_old = x_old_.data();
+    // The free unknowns, when they are few, from a list: those of the Cauchy point's list
+    // that the path took to the bound leave it (if it listed the free ones; otherwise a pass
+    // finds them).
+    const bool listed = k2 > 0 && !list_complement(free_count, total_);
+    if (listed) {
+      const auto fixed = [&](std::int64_t i) { return at_bound(x[i], g[i], bound(i), t); };
+      if (cauchy.listed_free) {
+        list_.erase(std::remove_if(list_.begin(), list_.end(), fixed), list_.end());
+      } else {
+        list_.clear();
+        loops::select(n_, [&](std::int64_t i) { return !fixed(i); }, list_);
+      }
     }
-    return finish_direction();
+    const CompactBfgs &bfgs = bfgs_;
+    const auto finish = [&](std::int64_t i, double x_bar, double *sum, double &max) {
+      finish_unknown(i, x_bar, sum, max);
+    };
+    std::array<double, 3> s = loops::sums_and_max<2>(
+        reductions_, n_, [&](std::int64_t i, double *sum, double &max) {
+          x_old[i] = x[i];
+          if (at_bound(x[i], g[i], bound(i), t)) {
+            finish(i, bound(i), sum, max);
+          } else if (listed) {
+            d[i] = x[i] - g[i] * inverse_theta;  // its correction and finish come from the list
+          } else {
+            finish(i, x[i] - g[i] * inverse_theta + (k2 > 0 ? bfgs.row_times(i, u) : 0.0), sum,
+                   max);
+          }
+        });
+    if (listed) {
+      // Column by column, each read in index order (see sums_over_list).
+      for (int j = 0; j < k2; ++j) {
+        const double *column = bfgs.column(j);
+        const double weight = bfgs.scale(j) * u[j];
+        for (std::int64_t i : list_) d[i] += weight * column[i];
+      }
+      double sums[2] = {0.0, 0.0}, max = -infinity;
+      for (std::int64_t i : list_) finish(i, d[i], sums, max);
+      reductions_.combine_sums(sums, 2);
+      reductions_.combine_maxima(&max, 1);
+      s[0] += sums[0];
+      s[1] += sums[1];
+      s[2] = std::max(s[2], max);
+    }
+    return take_direction_sums(s);
   }
 
   // The backtracked step: x_bar = x_cauchy + alpha (x_unprojected - x_cauchy) on the free
@@ -355,20 +410,30 @@ class Lbfgsb {
   // From x_bar in d: d <- max(x_bar, lower) - x, x_old <- x, and the slope g.d, |d|^2 and the
   // largest feasible step along d. Returns whether d descends.
   bool finish_direction() {
-    const double *x = x_, *g = g_.data();
+    const double *x = x_;
     double *d = d_, *x_old = x_old_.data();
-    // The maximum is that of -(step to the bound), so that its negative is the smallest.
-    const auto s = loops::sums_and_max<2>(reductions_, n_, [&](std::int64_t i, double *sum,
-                                                              double &max) {
-      const double target = d[i] > bound(i) ? d[i] : bound(i);
-      const double di = target - x[i];
-      d[i] = di;
-      x_old[i] = x[i];
-      sum[0] += g[i] * di;
-      sum[1] += di * di;
-      const double limit = di < 0.0 ? -(bound(i) - x[i]) / di : -infinity;
-      max = max > limit ? max : limit;
-    });
+    return take_direction_sums(loops::sums_and_max<2>(
+        reductions_, n_, [&](std::int64_t i, double *sum, double &max) {
+          x_old[i] = x[i];
+          finish_unknown(i, d[i], sum, max);
+        }));
+  }
+
+  // Unknown i's part of the direction from its x_bar: d_i = max(x_bar, lower) - x_i, and its
+  // shares of the sums g.d and d.d and of the maximum of -(step to the bound), whose
+  // negative is the largest feasible step.
+  void finish_unknown(std::int64_t i, double x_bar, double *sum, double &max) const {
+    const double di = (x_bar > bound(i) ? x_bar : bound(i)) - x_[i];
+    d_[i] = di;
+    sum[0] += g_[i] * di;
+    sum[1] += di * di;
+    const double limit = di < 0.0 ? -(bound(i) - x_[i]) / di : -infinity;
+    max = max > limit ? max : limit;
+  }
+
+  // The slope g.d, |d| and the largest feasible step from the sums g.d, d.d and the maximum
+  // of -(step to the bound). Returns whether d descends.
+  bool take_direction_sums(const std::array<double, 3> &s) {
     slope_ = s[0];
     direction_norm_ = std::sqrt(s[1]);
     largest_step_ = std::isfinite(s[2]) ? std::min(-s[2], unbounded_step) : unbounded_step;

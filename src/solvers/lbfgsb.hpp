@@ -36,6 +36,13 @@ struct CauchyPoint {
   double t = 0.0;              // the point is max(x - t g, lower)
   std::vector<double> c;       // W^T (x(t) - x)
   std::int64_t at_bound = 0;   // unknowns at the bound at x(t)
+  // Over the free unknowns at x(t) (those off the bound), with w_i row i of W: the sums of
+  // g_i w_i (2k) and of w_i w_i^T (2k x 2k, row-major), which the subspace minimisation
+  // needs. Formed over the free unknowns at t = 0, less each breakpoint the path passed.
+  std::vector<double> free_gradient, free_gram;
+  // Whether `list` came back holding every unknown off the bound at t = 0, in order (a
+  // superset, in order, of those off it at x(t)).
+  bool listed_free = false;
 };
 using Indices = std::vector<std::int64_t, FieldAllocator<std::int64_t>>;
 struct Breakpoint {

@@ -369,6 +369,32 @@ TEST(Lbfgsb, GeneralizedCauchyPointIsTheFirstMinimiserAlongThePath) {
     // The path crossed breakpoints before its minimum: more than the one unknown held at
     // t = 0 is on the bound.
     EXPECT_GE(cauchy.at_bound, 3) << pairs << " pairs";
+    // The sums over the free set at x(t), which the subspace step takes from the Cauchy
+    // point (formed over the free set at t = 0, or as the totals less the bound set, and
+    // then less the breakpoints passed), against the same sums formed directly over the
+    // unknowns off the bound at x(t). Allowed: rounding, 1e-14 of the sum of the terms'
+    // sizes over all unknowns, since totals may be formed and then reduced.
+    const int k2 = bfgs.columns();
+    ASSERT_EQ(cauchy.free_gradient.size(), static_cast<std::size_t>(k2));
+    ASSERT_EQ(cauchy.free_gram.size(), static_cast<std::size_t>(k2 * k2));
+    for (int r = 0; r < k2; ++r) {
+      double gradient = 0.0, gradient_size = 0.0;
+      std::vector<double> gram(static_cast<std::size_t>(k2), 0.0), gram_size(gram);
+      for (int i = 0; i < n; ++i) {
+        const bool free = !(g[i] > 0.0 && x[i] <= cauchy.t * g[i]);
+        gradient += free ? g[i] * bfgs.entry(r, i) : 0.0;
+        gradient_size += std::fabs(g[i] * bfgs.entry(r, i));
+        for (int c = 0; c < k2; ++c) {
+          gram[c] += free ? bfgs.entry(r, i) * bfgs.entry(c, i) : 0.0;
+          gram_size[c] += std::fabs(bfgs.entry(r, i) * bfgs.entry(c, i));
+        }
+      }
+      EXPECT_NEAR(cauchy.free_gradient[r], gradient, 1e-14 * gradient_size)
+          << pairs << " pairs, column " << r;
+      for (int c = 0; c < k2; ++c)
+        EXPECT_NEAR(cauchy.free_gram[r * k2 + c], gram[c], 1e-14 * gram_size[c])
+            << pairs << " pairs, entry " << r << ", " << c;
+    }
   }
 }
 
