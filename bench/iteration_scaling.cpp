@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // Iterations against the grid (not a test).
 //
-// By default: Polonsky-Keer with each value of its `preconditioner` option on the scene of
+// By default: Polonsky-Keer as published (preconditioner none, restart entry), then with each
+// value of its `preconditioner` option and its default restart rule, on the scene of
 // asperity_pk_benchmark (periodic half-space, E* 1, self-affine surface with H 0.8, roll-off
 // at L/4, short cutoff 8 pixels, rms slope 0.1, mean pressure 0.002), to the tolerance 1e-8.
 // With --challenge: `bugnicourt` on the gap on the contact-mechanics challenge's scene
@@ -20,7 +21,12 @@
 // states). The grid is planned with FFTW_ESTIMATE, so that the planner's timing does not add
 // noise to the seconds; they are rough on a busy machine, the iterations are not.
 //
-// usage: asperity_iteration_scaling [--free] [--challenge] [--levels L] [N ...]
+// With --preconditioner P only the rows of that value are run. With --algorithm NAME the bench scene is solved by that solver instead of pk (its rows
+// then try each value of `preconditioner` where it has the option), and each --option K=V
+// is set on every solve, after the row's own options.
+//
+// usage: asperity_iteration_scaling [--free] [--challenge] [--levels L] [--preconditioner P]
+//                                   [--algorithm NAME] [--option K=V ...] [N ...]
 //        (default sizes: 512 1024 2048; with --challenge 1024)
 #include <algorithm>
 #include <cmath>
@@ -28,32 +34,45 @@
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/grid.hpp"
 #include "physics/system.hpp"
 #include "physics/topography.hpp"
+#include "solvers/registry.hpp"
 #include "solvers/solver.hpp"
 
 namespace {
 
 struct Row {
-  std::string preconditioner;  // pk only; empty for bugnicourt
+  std::string preconditioner;  // empty where the algorithm has no such option
   std::string levels;          // "0", a count or "auto"
+  std::string restart;         // pk's restart rule; empty: the default
 };
 
-void set_levels(asp::Solver &solver, const std::string &levels) {
-  if (levels == "auto")
-    solver.set_option("levels", levels);
+// A number where the whole word reads as one, else the word (a choice, or "auto").
+void set_option(asp::Solver &solver, const std::string &name, const std::string &value) {
+  char *end = nullptr;
+  const double number = std::strtod(value.c_str(), &end);
+  if (!value.empty() && *end == '\0')
+    solver.set_option(name, number);
   else
-    solver.set_option("levels", std::strtod(levels.c_str(), nullptr));
+    solver.set_option(name, value);
+}
+
+bool has_option(const asp::AlgorithmSpec &spec, const std::string &name) {
+  for (const auto &option : spec.options)
+    if (option.name == name) return true;
+  return false;
 }
 
 }  // namespace
 
 int main(int argc, char **argv) {
   bool free = false, challenge = false;
-  std::string levels;
+  std::string levels, algorithm = "pk", only;
+  std::vector<std::pair<std::string, std::string>> options;
   std::vector<long> sizes;
   for (int i = 1; i < argc; ++i) {
     char *end = nullptr;
@@ -64,12 +83,21 @@ int main(int argc, char **argv) {
       challenge = true;
     } else if (std::strcmp(argv[i], "--levels") == 0 && i + 1 < argc) {
       levels = argv[++i];
+    } else if (std::strcmp(argv[i], "--preconditioner") == 0 && i + 1 < argc) {
+      only = argv[++i];
+    } else if (std::strcmp(argv[i], "--algorithm") == 0 && i + 1 < argc) {
+      algorithm = argv[++i];
+    } else if (std::strcmp(argv[i], "--option") == 0 && i + 1 < argc &&
+               std::strchr(argv[i + 1], '=') != nullptr) {
+      const std::string word = argv[++i];
+      const std::size_t equals = word.find('=');
+      options.emplace_back(word.substr(0, equals), word.substr(equals + 1));
     } else if (end != argv[i] && *end == '\0' && n >= 2 && n <= 16384) {
       sizes.push_back(n);
     } else {
       std::fprintf(stderr,
-                   "usage: %s [--free] [--challenge] [--levels L] [N ...]  (grid sizes 2 to "
-                   "16384, L a count or auto)\n",
+                   "usage: %s [--free] [--challenge] [--levels L] [--preconditioner P] "
+                   "[--algorithm NAME] [--option K=V ...] [N ...]  (grid sizes 2 to 16384, L a count or auto)\n",
                    argv[0]);
       return 2;
     }
@@ -77,11 +105,19 @@ int main(int argc, char **argv) {
   if (sizes.empty())
     sizes = challenge ? std::vector<long>{1024} : std::vector<long>{512, 1024, 2048};
 
+  if (challenge) algorithm = "bugnicourt";
+  const bool preconditioned =
+      !challenge && has_option(asp::find_algorithm(algorithm), "preconditioner");
   std::vector<Row> rows;
+  // pk as published first: no preconditioner, Polonsky & Keer's restart, no levels.
+  if (!challenge && has_option(asp::find_algorithm(algorithm), "restart") &&
+      (only.empty() || only == "none"))
+    rows.push_back({"none", "0", "entry"});
   for (const char *p : {"none", "fourier"}) {
-    if (challenge && std::strcmp(p, "none") != 0) continue;
-    rows.push_back({challenge ? "" : p, "0"});
-    if (!levels.empty()) rows.push_back({challenge ? "" : p, levels});
+    if (!preconditioned && std::strcmp(p, "none") != 0) continue;
+    if (preconditioned && !only.empty() && only != p) continue;
+    rows.push_back({preconditioned ? p : "", "0", ""});
+    if (!levels.empty()) rows.push_back({preconditioned ? p : "", levels, ""});
   }
 
   const double box = challenge ? 100e-6 : 1.0, modulus = challenge ? 25e6 : 1.0;
@@ -92,12 +128,12 @@ int main(int argc, char **argv) {
                 "tolerance %.0e\n",
                 free ? "free half-space" : "periodic half-space", penetration, tolerance);
   else
-    std::printf("pk on the %s, self-affine surface (H 0.8, roll-off L/4, short cutoff 8 px, "
+    std::printf("%s on the %s, self-affine surface (H 0.8, roll-off L/4, short cutoff 8 px, "
                 "rms slope %.2g), E* %.1f, mean pressure %.3g, tolerance %.0e\n",
-                free ? "free half-space" : "periodic half-space", slope, modulus,
+                algorithm.c_str(), free ? "free half-space" : "periodic half-space", slope, modulus,
                 mean_pressure, tolerance);
-  std::printf("%6s %15s %6s %7s %10s %9s %8s %9s %14s %12s\n", "N", "preconditioner",
-              "levels", "iters", "transforms", "seconds", "growth", "contact", "energy",
+  std::printf("%6s %15s %6s %8s %7s %10s %9s %8s %9s %14s %12s\n", "N", "preconditioner",
+              "levels", "restart", "iters", "transforms", "seconds", "growth", "contact", "energy",
               "dp/max p");
   std::vector<long> previous(rows.size(), 0);
   for (long n : sizes) {
@@ -120,15 +156,17 @@ int main(int argc, char **argv) {
 
     std::vector<double> first;
     for (std::size_t v = 0; v < rows.size(); ++v) {
-      asp::Solver solver(challenge ? "bugnicourt" : "pk");
+      asp::Solver solver(algorithm);
       solver.set_option("tolerance", tolerance);
       if (challenge) {
         solver.set_option("variable", std::string("gap"));
         solver.set_option("max_iterations", 1e5);
-      } else {
+      } else if (preconditioned) {
         solver.set_option("preconditioner", rows[v].preconditioner);
       }
-      set_levels(solver, rows[v].levels);
+      set_option(solver, "levels", rows[v].levels);
+      if (!rows[v].restart.empty()) solver.set_option("restart", rows[v].restart);
+      for (const auto &option : options) set_option(solver, option.first, option.second);
       system.reset_state();
       if (challenge)
         solver.solve(system, asp::Control::penetration, penetration);
@@ -153,8 +191,10 @@ int main(int argc, char **argv) {
         std::snprintf(growth, sizeof growth, "%.2f",
                       static_cast<double>(iterations) / static_cast<double>(previous[v]));
       previous[v] = iterations;
-      std::printf("%6ld %15s %6s %7ld %10lld %9.2f %8s %9.4f %14.8e %12.1e%s\n", n,
-                  challenge ? "-" : rows[v].preconditioner.c_str(), rows[v].levels.c_str(),
+      std::printf("%6ld %15s %6s %8s %7ld %10lld %9.2f %8s %9.4f %14.8e %12.1e%s\n", n,
+                  rows[v].preconditioner.empty() ? "-" : rows[v].preconditioner.c_str(),
+                  rows[v].levels.c_str(),
+                  rows[v].restart.empty() ? "-" : rows[v].restart.c_str(),
                   iterations, static_cast<long long>(r.transforms), r.seconds, growth,
                   system.contact_fraction(), energy, v == 0 ? 0.0 : difference / largest,
                   r.converged() ? "" : "  (not converged)");

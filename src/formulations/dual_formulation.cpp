@@ -275,43 +275,54 @@ DualFormulation::Gap DualFormulation::evaluate_gap(bool with_objective) {
   return gap;
 }
 
-template <class Source>
-double DualFormulation::update_direction_from(Source source, double beta) {
+template <class Source, class Member>
+double DualFormulation::update_direction_from(Source source, Member member, double t_mean,
+                                              double beta) {
   double *t = direction_.data();
   const double *g = state_.gap.data();
   const double *p = state_.pressure.data();
   const double shift = shift_;
+  // Projected gradient (the error) and the new search direction in one branch-free pass, so
+  // that it vectorises. The violations are also summed, only to notice NaN, which a maximum
+  // may drop; and the gap's slope along the old direction, for the restart test.
+  const auto r = loops::sums_and_max<3>(
+      grid_.reductions(), n_, [&](std::int64_t i, double *sum, double &max) {
+        const double gi = g[i] - shift;
+        const bool contact = p[i] > 0.0;
+        const bool in = member(contact, gi);
+        const double si = in ? source(i, gi) : 0.0;
+        const double old = in ? t[i] - t_mean : 0.0;
+        const double ti = si + beta * old;
+        t[i] = ti;
+        const double v = contact ? std::fabs(gi) : (gi > 0.0 ? 0.0 : -gi);
+        max = max > v ? max : v;
+        sum[0] += gi * ti;
+        sum[1] += v;
+        sum[2] += gi * old;
+      });
+  descent_ = r[0];
+  old_slope_ = beta * r[2];
+  return std::isfinite(r[1]) ? r[3] : r[1];
+}
+
+double DualFormulation::update_direction(double beta) {
+  enter_along_direction_ = false;
   // The old direction made mean-free on the current contact set (load control), so that a
   // step along t keeps the mean pressure and the step length needs no centred product.
   const double t_mean = control_ == Control::mean_pressure && contacts_ > 0.0
                             ? direction_sum_on_contact_ / contacts_
                             : 0.0;
-  // Projected gradient (the error) and the new search direction in one branch-free pass, so
-  // that it vectorises. The violations are also summed, only to notice NaN, which a maximum
-  // may drop.
-  const auto r = loops::sums_and_max<2>(
-      grid_.reductions(), n_, [&](std::int64_t i, double *sum, double &max) {
-        const double gi = g[i] - shift;
-        const bool in = p[i] > 0.0;
-        const double ti = in ? source(i, gi) + beta * (t[i] - t_mean) : 0.0;
-        t[i] = ti;
-        const double v = in ? std::fabs(gi) : (gi > 0.0 ? 0.0 : -gi);
-        max = max > v ? max : v;
-        sum[0] += gi * ti;
-        sum[1] += v;
-      });
-  descent_ = r[0];
-  return std::isfinite(r[1]) ? r[2] : r[1];
-}
-
-double DualFormulation::update_direction(double beta) {
-  return update_direction_from([](std::int64_t, double gi) { return gi; }, beta);
+  return update_direction_from([](std::int64_t, double gi) { return gi; },
+                               [](bool contact, double) { return contact; }, t_mean, beta);
 }
 
 double DualFormulation::update_preconditioned_direction(double beta) {
+  enter_along_direction_ = true;
   const double *z = preconditioned_.data();
   const double z_mean = preconditioned_mean_;
-  return update_direction_from([&](std::int64_t i, double) { return z[i] - z_mean; }, beta);
+  return update_direction_from([&](std::int64_t i, double) { return z[i] - z_mean; },
+                               [](bool contact, double gi) { return contact | (gi < 0.0); },
+                               free_direction_mean_, beta);
 }
 
 double DualFormulation::curvature() {
@@ -332,7 +343,9 @@ bool DualFormulation::step(double tau) {
   const double *g = state_.gap.data();
   const double *t = direction_.data();
   const double shift = shift_, scale = scale_;
-  // Step, project onto p >= 0, and let pixels with a negative gap enter the contact set.
+  const bool along = enter_along_direction_;
+  // Step, project onto p >= 0, and let pixels with a negative gap enter the contact set
+  // (along the preconditioned direction, which covers them, or with -tau g).
   // The last sum counts pixels whose new pressure is not the plain step (clipped or
   // entered): when there are none, the pressure's spectrum can be updated linearly.
   // Off the contact set t = 0 (update_direction made it so) and p = 0, so the plain step
@@ -341,8 +354,8 @@ bool DualFormulation::step(double tau) {
     const double gi = g[i] - shift;
     const double stepped = scale * p[i] - tau * t[i];
     double pi = stepped > 0.0 ? stepped : 0.0;
-    const bool enters = (pi == 0.0) & (gi < 0.0);
-    pi = enters ? -tau * gi : pi;
+    const bool enters = along ? (p[i] == 0.0) & (pi > 0.0) : (pi == 0.0) & (gi < 0.0);
+    pi = enters && !along ? -tau * gi : pi;
     sum[0] += pi;
     sum[1] += enters ? 1.0 : 0.0;
     sum[2] += pi > 0.0 ? t[i] : 0.0;

@@ -76,13 +76,18 @@ class DualFormulation final : public ScaledFormulation {
 
   // The new search direction t = g + beta t_old on the contact set (0 elsewhere), with t_old
   // made mean-free there under load control. Returns the error of the current iterate.
+  // Called again with beta = 0 it restarts from steepest descent (t_old is then ignored).
   double update_direction(double beta);
   // g.t, the descent of the energy along t.
   double descent() const { return descent_; }
+  // beta g.t_old, the part of the descent the old direction brought: 0 after an exact line
+  // search that kept the contact set, so its size tells how far conjugacy was lost.
+  double old_slope() const { return old_slope_; }
   // t.K^-1 t, the curvature of the energy along t (one forward transform, by Parseval).
   double curvature();
   // p <- max(p - tau t, 0) on the contact set; pixels outside it with a negative gap enter
-  // with pressure -tau g. Under load control the result is rescaled to the target mean.
+  // with pressure -tau g (after update_preconditioned_direction: with max(-tau t, 0), t being
+  // defined there). Under load control the result is rescaled to the target mean.
   // Returns true if pixels entered the contact set.
   bool step(double tau);
   // When the direction vanishes (no contact, or a gap already uniform on the contact set)
@@ -95,17 +100,20 @@ class DualFormulation final : public ScaledFormulation {
   //
   // The compliance K^-1 is a Fourier multiplier 2/(E*|q|) on a periodic substrate, so the
   // condition number of the system on the contact set grows like the grid's size. Its
-  // inverse, the stiffness, applied to the residual r (the centred gap on the contact set,
-  // 0 elsewhere) and restricted to the contact set again, z = P K P r, undoes most of that
-  // (Vollebregt, J. Comput. Phys. 257 (2014) 333). Under load control z is made mean-free on
-  // the contact set, so that a step along it keeps the mean pressure. On a free substrate K is
-  // the stiffness of the padded surface, and P also restricts to the box.
+  // inverse, the stiffness, applied to the residual r and restricted again, z = P K P r,
+  // undoes most of that (Vollebregt, J. Comput. Phys. 257 (2014) 333). P restricts to the free
+  // set N: the contact set and the pixels off it whose gap is negative, which enter along the
+  // direction (step() then gives them max(-tau t, 0), not -tau g: entering along the gap
+  // while the set moves along z, the two disagree, and on rough scenes at large contact the
+  // set stalled). r is the centred gap on N. Under load control z is made mean-free on N, so
+  // that a step along it keeps the mean pressure. On a free substrate K is the stiffness of
+  // the padded surface, and P also restricts to the box.
 
   // z of the current gap (one transform pair); returns r.z, the norm that replaces |r|^2 in
   // the conjugate-gradient coefficient beta.
   double precondition();
-  // As update_direction, with z in place of the gap: t = z + beta t_old on the contact set.
-  // Returns the error of the current iterate.
+  // As update_direction, with z in place of the gap and N in place of the contact set:
+  // t = z + beta t_old on N. Returns the error of the current iterate.
   double update_preconditioned_direction(double beta);
 
   bool finish() override;
@@ -118,16 +126,21 @@ class DualFormulation final : public ScaledFormulation {
   double gap_of_iterate(double *gap, bool with_energy);
   void load_state();
   // The pass of update_direction and update_preconditioned_direction: t = source(i, g_i) +
-  // beta t_old on the contact set, 0 elsewhere, g_i the centred gap; the descent g.t into
-  // descent_; returns the error of the current iterate.
-  template <class Source>
-  double update_direction_from(Source source, double beta);
+  // beta (t_old - t_mean) on the pixels that are members (of the contact set, or of N), 0
+  // elsewhere, g_i the centred gap; the descent g.t into descent_ and beta g.t_old into
+  // old_slope_; returns the error of the current iterate.
+  template <class Source, class Member>
+  double update_direction_from(Source source, Member member, double t_mean, double beta);
 
   double compliance_factor_;  // k: turns the substrate's K^-1 into the scaled one
 
   Field direction_;         // t
   Field preconditioned_;    // z = P K P r (the Fourier preconditioner's residual)
-  double preconditioned_mean_ = 0.0;  // mean of z on the contact set, removed under load control
+  double preconditioned_mean_ = 0.0;  // mean of z on N, removed under load control
+  double free_direction_mean_ = 0.0;  // mean of t_old on N, removed under load control
+  // Whether the last direction was the preconditioned one, whose pixels off the contact set
+  // enter along it.
+  bool enter_along_direction_ = false;
   Spectrum spectrum_;       // work; holds the spectrum of t between curvature() and the next gap
   Spectrum pressure_spectrum_;  // the spectrum of the pressure array
   Spectrum height_spectrum_;  // FFT of the scaled (h - max h), over the transform's points
@@ -140,6 +153,7 @@ class DualFormulation final : public ScaledFormulation {
   double delta_ = 0.0;            // scaled penetration
   double contacts_ = 0.0;         // pixels in the contact set at the last evaluation
   double descent_ = 0.0;
+  double old_slope_ = 0.0;
   double direction_sum_on_contact_ = 0.0;  // sum of t over the contact set after a step
   // The last step p <- step_scale p - step_length t, and whether it was that exactly.
   double step_scale_ = 1.0;

@@ -56,7 +56,11 @@ WestergaardErrors westergaard(std::int64_t n) {
   system.set_topography(h.data());
   const double p_star = pi * modulus * h0 / l;
   const double mean = 0.3 * p_star;
-  auto report = asp_test::solve_pk(system, asp::Control::mean_pressure, mean, 1e-12);
+  // The tolerance sits above the rounding floor of the scaled gap at 4096 pixels: the
+  // preconditioned iteration reaches about 3e-12 by its 23rd iteration and then hovers
+  // between 1e-12 and 6e-12, so that 1e-12 is met or not by chance. The errors checked below
+  // are the discretisation's, 1e-7 of the peak pressure and more.
+  auto report = asp_test::solve_pk(system, asp::Control::mean_pressure, mean, 1e-11);
   EXPECT_TRUE(report.converged());
 
   const double s2 = mean / p_star;
