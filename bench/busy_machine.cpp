@@ -110,11 +110,13 @@ struct CallTimes {
   double per_iteration = 0.0;
 };
 
-// K iterations, whatever the error: the tolerance out of reach, no stall test. A solve that
+// K iterations on the grid itself, whatever the error: the tolerance out of reach, no stall
+// test, no nested grids. A solve that
 // ends otherwise (a breakdown) is not the work meant, and is refused. Returns the seconds
 // per iteration after the first.
 double solve_fixed(asp::Solver &solver, asp::System &system, asp::Control control, double value,
                    int iterations) {
+  solver.set_option("levels", 0.0);  // the grid's own iterations (pk's default nests grids)
   solver.set_option("tolerance", 1e-300);
   solver.set_option("stall_window", 0.0);
   solver.set_option("max_iterations", static_cast<double>(iterations));

@@ -141,6 +141,8 @@ int main(int argc, char **argv) {
     }
     asp::Solver solver(algorithm);
     solver.set_option("tolerance", tolerance);
+    // An iteration's cost is measured on the grid itself: no nested grids unless asked for.
+    solver.set_option("levels", 0.0);
     for (const auto &o : options) {
       char *end = nullptr;
       const double number = std::strtod(o.second.c_str(), &end);

@@ -53,7 +53,9 @@ inline ScalingScene scaling_scene(const std::shared_ptr<asp::Grid> &grid, const 
 
 // Readies `solver` for a timed solve of `iterations` iterations of the scene: a first short
 // solve, untimed, makes the plans and the substrate's tables; the state goes back to rest.
+// The iterations are those of the grid itself: no nested grids (pk's default takes them).
 inline void warm_up(asp::Solver &solver, ScalingScene &scene, int iterations) {
+  solver.set_option("levels", 0.0);
   solver.set_option("tolerance", 1e-300);
   solver.set_option("stall_window", 0.0);
   solver.set_option("max_iterations", 2.0);

@@ -706,12 +706,19 @@ typedef struct asp_solver asp_solver;
  *                 ASP_CONTROL_MEAN_PRESSURE, ASP_CONTROL_PENETRATION. Option
  *                 "preconditioner" (string): "auto" (the default; here the same as
  *                 "fourier"), "fourier" or "none". "fourier": the substrate's stiffness
- *                 applied to the gap on the contact set before each conjugate-gradient
- *                 update; on both substrates and under both controls it reaches the same
- *                 solution in 2 to 5 times fewer iterations on 512^2 to 2048^2 grids, each
- *                 costing one more FFT pair, and 12 more bytes per pixel (24 on a free
- *                 substrate). "none": the iteration as published
- *                 (docs/performance.md, "Iterations against the grid").
+ *                 applied to the gap on the contact set (and on the pixels off it whose gap
+ *                 is negative, which enter along the result) before each
+ *                 conjugate-gradient update; on both substrates and under both controls it
+ *                 reaches the same solution in 2 to 3 times fewer iterations on 512^2 to
+ *                 4096^2 grids, each costing one more FFT pair, and 12 more bytes per
+ *                 pixel (24 on a free substrate). "none": unpreconditioned, as published.
+ *                 Option "restart" (string): "powell" (the default) keeps the conjugate
+ *                 direction across changes of the contact set and restarts it where
+ *                 Powell's test finds it no longer conjugate; "entry" restarts after every
+ *                 step that let pixels enter the contact set, as published. On rough
+ *                 surfaces "powell" takes 1.4 to 3 times fewer iterations, whose counts grow
+ *                 about 1.25 times per doubling of the grid (docs/performance.md,
+ *                 "Iterations against the grid").
  *   "bugnicourt"  Bugnicourt et al.'s constrained conjugate gradient (OUT-LIN, 2018; hard
  *                 wall), on the pressure (option "variable" = "pressure", the default;
  *                 controls as "pk"; no adhesion; periodic or free substrate) or on the gap
@@ -785,8 +792,8 @@ ASP_EXPORT int asp_solver_describe(const asp_solver *solver, char *buffer, int64
  *                     many iterations have passed since the error last fell below 0.99
  *                     times the error of the iteration at which it last did so (the
  *                     starting point at first); 0: never stall;
- *   "levels"          integer in [0, 16], or the string "auto"; default 0: nested grids
- *                     (cascadic coarse-to-fine). A solve whose system state carries no
+ *   "levels"          integer in [0, 16], or the string "auto"; default 0 ("auto" for
+ *                     "pk"): nested grids (cascadic coarse-to-fine). A solve whose system state carries no
  *                     pressure (a new system, after asp_system_reset or a new
  *                     topography) first solves the same scene on this many grids coarser
  *                     by 2 per axis (same box, substrate, K~(0) and interaction; the heights'
@@ -806,10 +813,11 @@ ASP_EXPORT int asp_solver_describe(const asp_solver *solver, char *buffer, int64
  *                     cannot take (an odd size on the way, a side below 8 pixels, or a grid
  *                     distributed over processes) is refused by asp_solver_solve and
  *                     asp_solver_supports with ASP_ERR_UNSUPPORTED naming the option and
- *                     why. The report counts the iterations, evaluations and history of the
- *                     system's own grid, the seconds of all levels, and the transforms of all
- *                     levels, a coarse one's weighted by its pixels over the system's (one
- *                     transform of a grid halved per axis counts a quarter); the progress
+ *                     why. The report and the history count the iterations and evaluations
+ *                     of the system's own grid, the seconds of all levels, and the transforms
+ *                     of all levels, a coarse one's weighted by its pixels over the system's
+ *                     (one transform of a grid halved per axis counts a quarter; the
+ *                     history's first row holds the coarse levels' already); the progress
  *                     callback is called on the system's grid only;
  * and its own options (asp_solver_describe lists them). Integer options take whole numbers
  * given as doubles. An unknown name or a value outside the range is refused with

@@ -29,14 +29,14 @@ double Monitor::seconds() const {
 void Monitor::record(std::int64_t iteration, const IterationState &state, double elapsed,
                      double error, double objective, double contact_fraction) {
   history_.push_back({static_cast<double>(iteration), static_cast<double>(state.evaluations),
-                      static_cast<double>(state.transforms), elapsed, error, objective,
-                      contact_fraction});
+                      static_cast<double>(state.transforms + prior_transforms_), elapsed,
+                      error, objective, contact_fraction});
 }
 
 bool Monitor::should_stop(std::int64_t iteration, const IterationState &state) {
   iterations_ = iteration;
   evaluations_ = state.evaluations;
-  transforms_ = state.transforms;
+  transforms_ = state.transforms + prior_transforms_;
   // An error is a magnitude: one that is not finite, or negative (a maximum over no finite
   // value), says that the iterate broke down.
   if (!std::isfinite(state.error) || state.error < 0.0 ||

@@ -80,6 +80,9 @@ class Monitor {
   void declare_breakdown() { termination_ = Termination::breakdown; }
   // The algorithm has no step left to take (no descent direction) short of the tolerance.
   void declare_stalled() { termination_ = Termination::stalled; }
+  // Transforms made for this solve before its first iteration (the coarse levels of nested
+  // grids): counted in every row of the history and in transforms(), as the solve's work.
+  void count_prior_transforms(std::int64_t transforms) { prior_transforms_ = transforms; }
 
   Termination termination() const { return termination_; }
   std::int64_t iterations() const { return iterations_; }
@@ -101,6 +104,7 @@ class Monitor {
   std::int64_t iterations_ = 0;
   std::int64_t evaluations_ = 0;
   std::int64_t transforms_ = 0;
+  std::int64_t prior_transforms_ = 0;
   // The last finite error seen; DBL_MAX until there is one (a start that is not finite).
   double error_ = std::numeric_limits<double>::max();
   double stall_reference_ = 0.0;  // the error the next iterations must beat by 1 %

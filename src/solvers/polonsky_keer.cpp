@@ -5,6 +5,7 @@
 
 #include "formulations/dual_formulation.hpp"
 #include "solvers/monitor.hpp"
+#include "solvers/nested_grids.hpp"
 
 namespace asp {
 namespace {
@@ -103,7 +104,8 @@ AlgorithmSpec polonsky_keer_algorithm() {
   spec.options = {{"preconditioner", OptionType::choice, 0.0, 0.0, 0.0, false,
                    {"auto", "fourier", "none"},
                    "fourier: preconditioned by the substrate's stiffness (E*|q|/2 on a "
-                   "periodic half-space) applied to the gap on the contact set, one more "
+                   "periodic half-space) applied to the gap on the contact set and on the "
+                   "pixels off it whose gap is negative, which enter along it, one more "
                    "transform pair per iteration and 12 more bytes per pixel (24 on a free "
                    "substrate) for iterations "
                    "that grow far less with the grid; none: Polonsky & Keer's conjugate "
@@ -116,6 +118,11 @@ AlgorithmSpec polonsky_keer_algorithm() {
                    "on rough surfaces, whose contact set changes often); entry, after every "
                    "step that let pixels enter the contact set (Polonsky & Keer as "
                    "published); both restart where the direction would not descend"}};
+  // Nested grids by default: pk's problem is the convex one of the hard wall, whose one
+  // solution the cascade reaches as a cold solve does, in fewer iterations on the grid
+  // itself (38 against 48 at 2048^2 on the bench scene) and less time (0.9 times); below
+  // 128 pixels a side "auto" takes no level, and a warm start none either.
+  spec.default_levels = levels_auto;
   spec.run = run;
   return spec;
 }

@@ -46,6 +46,8 @@ namespace {
 
 AlgorithmSpec with_common_options(AlgorithmSpec spec) {
   std::vector<OptionSpec> options = common_options();
+  for (OptionSpec &option : options)
+    if (option.name == "levels") option.default_value = spec.default_levels;
   options.insert(options.end(), spec.options.begin(), spec.options.end());
   spec.options = std::move(options);
   return spec;
@@ -62,6 +64,13 @@ std::string number_text(double v) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%g", v);
   return buffer;
+}
+
+// The default of a number option, as the word it stands for where it has one ("auto").
+std::string default_text(const OptionSpec &option) {
+  for (const auto &word : option_words(option.name))
+    if (word.second == option.default_value) return word.first;
+  return number_text(option.default_value);
 }
 
 }  // namespace
@@ -183,7 +192,7 @@ std::string describe(const AlgorithmSpec &algorithm) {
       case OptionType::real:
       case OptionType::integer:
         text += std::string(o.type == OptionType::real ? " (real" : " (integer") +
-                ", default " + number_text(o.default_value) + ", range " +
+                ", default " + default_text(o) + ", range " +
                 (o.minimum_excluded ? "(" : "[") + number_text(o.minimum) + ", " +
                 number_text(o.maximum) + "])";
         break;

@@ -182,6 +182,9 @@ void Solver::solve(System &system, Control control, double value) {
     // A prolonged coarse state is the solve's, not the caller's: a failure from here on
     // resets it (a nested solve starts only from a state without pressure, a cold one).
     if (coarse.prolonged) system.set_state_held_by_solve(true);
+    // The coarse levels' transforms, weighted by their share of the pixels, are the solve's
+    // work: the history's rows and the report count them.
+    monitor.count_prior_transforms(static_cast<std::int64_t>(std::ceil(coarse.transforms)));
     algorithm_.run(system, control, value, options_, monitor);
   } catch (...) {
     if (keep_start) {
@@ -198,8 +201,7 @@ void Solver::solve(System &system, Control control, double value) {
   report_.evaluations = monitor.evaluations();
   // With nested grids: the iterations and evaluations of the system's own grid, the
   // transforms of every level, a coarse one's weighted by its share of the pixels.
-  report_.transforms =
-      monitor.transforms() + static_cast<std::int64_t>(std::ceil(coarse.transforms));
+  report_.transforms = monitor.transforms();
   report_.error = monitor.error();
   report_.termination = monitor.termination();
   report_.seconds = monitor.seconds();
