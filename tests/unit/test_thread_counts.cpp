@@ -4,10 +4,15 @@
 // are added (core/loops.hpp), and FFTW's threaded transforms round differently; a solve to
 // 1e-10 amplifies those rounding differences (1e-16) by less than four orders of magnitude.
 // The grids (256 x 256, and the free substrate's 512 x 512 transforms) are above the size at
-// which loops and FFTs start using threads. The same count twice gives the same bits.
+// which loops and FFTs start using threads. The same count twice gives the same bits. pk's
+// defaults (the Fourier preconditioner, Powell's restarts, nested grids) are covered as they
+// are, its published iteration and the other solvers' nested grids and preconditioner by
+// options.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
+#include <cstdlib>
 #include <cmath>
 #include <ostream>
 #include <string>
@@ -27,7 +32,28 @@ struct Case {
   Wall wall;
   bool free;
   Control control;
+  const char *options = "";  // more options, "name=value" separated by spaces
 };
+
+// The options of a case, set on the solver: a number where the value reads as one.
+void set_options(Solver &solver, const std::string &options) {
+  std::size_t start = 0;
+  while (start < options.size()) {
+    std::size_t end = options.find(' ', start);
+    if (end == std::string::npos) end = options.size();
+    const std::string word = options.substr(start, end - start);
+    start = end + 1;
+    if (word.empty()) continue;
+    const std::size_t equals = word.find('=');
+    const std::string name = word.substr(0, equals), value = word.substr(equals + 1);
+    char *rest = nullptr;
+    const double number = std::strtod(value.c_str(), &rest);
+    if (*rest == '\0')
+      solver.set_option(name, number);
+    else
+      solver.set_option(name, value);
+  }
+}
 
 struct Result {
   std::vector<double> pressure, gap;
@@ -50,6 +76,7 @@ Result solve(const Case &c, int threads) {
   solver.set_option("tolerance", 1e-10);
   solver.set_option("max_iterations", 20000.0);
   if (*c.variable != '\0') solver.set_option("variable", std::string(c.variable));
+  set_options(solver, c.options);
   solver.solve(system, c.control, value);
   Result r;
   r.pressure = asp_test::field_vector(system.state().pressure);
@@ -69,6 +96,8 @@ std::string name_of(const Case &c) {
   if (*c.variable != '\0') name += std::string("_") + c.variable;
   name += c.wall == Wall::hard ? "_hard" : c.wall == Wall::adhesive ? "_adhesive" : "_soft";
   if (c.free) name += "_free";
+  for (const char *o = c.options; *o != '\0'; ++o)
+    name += std::isalnum(static_cast<unsigned char>(*o)) ? *o : '_';
   return name;
 }
 
@@ -94,6 +123,14 @@ INSTANTIATE_TEST_SUITE_P(
     Solvers, ThreadCounts,
     ::testing::Values(Case{"pk", "", Wall::hard, false, Control::mean_pressure},
                       Case{"pk", "", Wall::hard, true, Control::mean_pressure},
+                      Case{"pk", "", Wall::hard, false, Control::mean_pressure,
+                           " preconditioner=none restart=entry levels=0"},
+                      Case{"bugnicourt", "pressure", Wall::hard, false,
+                           Control::mean_pressure, " levels=auto"},
+                      Case{"bugnicourt", "gap", Wall::adhesive, false, Control::penetration,
+                           " preconditioner=fourier levels=auto"},
+                      Case{"lbfgsb", "pressure", Wall::hard, false, Control::penetration,
+                           " levels=auto"},
                       Case{"bugnicourt", "pressure", Wall::hard, false, Control::mean_pressure},
                       Case{"bugnicourt", "gap", Wall::adhesive, false, Control::penetration},
                       Case{"lbfgsb", "pressure", Wall::hard, false, Control::penetration},
