@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "../option_list.hpp"
 #include "asperity/asperity_mpi.h"
 
 namespace {
@@ -165,23 +166,13 @@ struct Case {
   const char *options = "";     // more options, "name=value" separated by spaces
 };
 
-// The options of a case, set on the solver: a number where the value reads as one.
+// The options of a case, set on the solver.
 void set_options(asp_solver *solver, const std::string &options) {
-  std::size_t start = 0;
-  while (start < options.size()) {
-    std::size_t end = options.find(' ', start);
-    if (end == std::string::npos) end = options.size();
-    const std::string word = options.substr(start, end - start);
-    start = end + 1;
-    if (word.empty()) continue;
-    const std::size_t equals = word.find('=');
-    const std::string name = word.substr(0, equals), value = word.substr(equals + 1);
-    char *rest = nullptr;
-    const double number = std::strtod(value.c_str(), &rest);
-    if (*rest == '\0')
-      require_ok(asp_solver_set_option(solver, name.c_str(), number), name);
+  for (const asp_test::OptionWord &o : asp_test::option_list(options)) {
+    if (o.numeric)
+      require_ok(asp_solver_set_option(solver, o.name.c_str(), o.number), o.name);
     else
-      require_ok(asp_solver_set_option_string(solver, name.c_str(), value.c_str()), name);
+      require_ok(asp_solver_set_option_string(solver, o.name.c_str(), o.text.c_str()), o.name);
   }
 }
 

@@ -12,12 +12,12 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cstdlib>
 #include <cmath>
 #include <ostream>
 #include <string>
 #include <vector>
 
+#include "../option_list.hpp"
 #include "scene.hpp"
 
 using namespace asp;
@@ -35,23 +35,13 @@ struct Case {
   const char *options = "";  // more options, "name=value" separated by spaces
 };
 
-// The options of a case, set on the solver: a number where the value reads as one.
+// The options of a case, set on the solver.
 void set_options(Solver &solver, const std::string &options) {
-  std::size_t start = 0;
-  while (start < options.size()) {
-    std::size_t end = options.find(' ', start);
-    if (end == std::string::npos) end = options.size();
-    const std::string word = options.substr(start, end - start);
-    start = end + 1;
-    if (word.empty()) continue;
-    const std::size_t equals = word.find('=');
-    const std::string name = word.substr(0, equals), value = word.substr(equals + 1);
-    char *rest = nullptr;
-    const double number = std::strtod(value.c_str(), &rest);
-    if (*rest == '\0')
-      solver.set_option(name, number);
+  for (const asp_test::OptionWord &o : asp_test::option_list(options)) {
+    if (o.numeric)
+      solver.set_option(o.name, o.number);
     else
-      solver.set_option(name, value);
+      solver.set_option(o.name, o.text);
   }
 }
 
