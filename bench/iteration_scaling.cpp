@@ -5,7 +5,8 @@
 // value of its `preconditioner` option and its default restart rule, on the scene of
 // asperity_pk_benchmark (periodic half-space, E* 1, self-affine surface with H 0.8, roll-off
 // at L/4, short cutoff 8 pixels, rms slope 0.1, mean pressure 0.002), to the tolerance 1e-8.
-// With --challenge: `bugnicourt` on the gap on the contact-mechanics challenge's scene
+// With --challenge: `bugnicourt` (or the --algorithm given) on the gap on the
+// contact-mechanics challenge's scene
 // (asperity_challenge: a 100 um box, H 0.8, roll-off 20 um, short cutoff 0.1 um, rms slope 1,
 // E* 25 MPa, exponential adhesion w 50 mJ/m^2, rho 2.071 nm) under penetration control at
 // 1.5 um, to the tolerance 1e-6. With --levels L (an integer or "auto") each of those solves
@@ -71,7 +72,7 @@ bool has_option(const asp::AlgorithmSpec &spec, const std::string &name) {
 
 int main(int argc, char **argv) {
   bool free = false, challenge = false;
-  std::string levels, algorithm = "pk", only;
+  std::string levels, algorithm, only;
   std::vector<std::pair<std::string, std::string>> options;
   std::vector<long> sizes;
   for (int i = 1; i < argc; ++i) {
@@ -105,7 +106,7 @@ int main(int argc, char **argv) {
   if (sizes.empty())
     sizes = challenge ? std::vector<long>{1024} : std::vector<long>{512, 1024, 2048};
 
-  if (challenge) algorithm = "bugnicourt";
+  if (algorithm.empty()) algorithm = challenge ? "bugnicourt" : "pk";
   const bool preconditioned =
       !challenge && has_option(asp::find_algorithm(algorithm), "preconditioner");
   std::vector<Row> rows;
@@ -124,9 +125,10 @@ int main(int argc, char **argv) {
   const double slope = challenge ? 1.0 : 0.1, mean_pressure = 0.002, penetration = 1.5e-6;
   const double tolerance = challenge ? 1e-6 : 1e-8;
   if (challenge)
-    std::printf("bugnicourt (gap) on the challenge's scene, %s, penetration %.3g m, "
+    std::printf("%s (gap) on the challenge's scene, %s, penetration %.3g m, "
                 "tolerance %.0e\n",
-                free ? "free half-space" : "periodic half-space", penetration, tolerance);
+                algorithm.c_str(), free ? "free half-space" : "periodic half-space",
+                penetration, tolerance);
   else
     std::printf("%s on the %s, self-affine surface (H 0.8, roll-off L/4, short cutoff 8 px, "
                 "rms slope %.2g), E* %.1f, mean pressure %.3g, tolerance %.0e\n",
@@ -159,7 +161,8 @@ int main(int argc, char **argv) {
       asp::Solver solver(algorithm);
       solver.set_option("tolerance", tolerance);
       if (challenge) {
-        solver.set_option("variable", std::string("gap"));
+        if (has_option(solver.algorithm(), "variable"))
+          solver.set_option("variable", std::string("gap"));
         solver.set_option("max_iterations", 1e5);
       } else if (preconditioned) {
         solver.set_option("preconditioner", rows[v].preconditioner);
