@@ -263,6 +263,10 @@ class SolverApi(unittest.TestCase):
         self.assertEqual(solver.name, "lbfgsb")
         self.assertEqual(solver.get_option("variable"), "gap")
         self.assertEqual(solver.get_option("memory"), 7.0)
+        self.assertEqual(solver.get_option("levels"), 0.0)
+        # pk nests grids by default: its "levels" holds the word "auto", read back as such.
+        self.assertEqual(asperity.Solver("pk").get_option("levels"), "auto")
+        self.assertEqual(asperity.Solver("pk", levels=2).get_option("levels"), 2.0)
         solver.tolerance = 1e-9
         self.assertEqual(solver.tolerance, 1e-9)
         solver.max_iterations = 500

@@ -91,11 +91,15 @@ class Solver(OwnedHandle):
                   "asp_solver_set_option")
 
     def get_option(self, name):
-        """An option's value: a float for numeric options, a str for string options."""
+        """An option's value: a float for numeric options, a str for string options, and the
+        word a numeric option holds where it holds one ("auto" for "levels")."""
         value = ctypes.c_double()
         status = lib.asp_solver_get_option(self.handle, name.encode(), ctypes.byref(value))
         if status == _c.ASP_OK:
-            return value.value
+            try:
+                return read_string("asp_solver_get_option_string", self.handle, name.encode())
+            except Error:
+                return value.value
         try:
             return read_string("asp_solver_get_option_string", self.handle, name.encode())
         except Error:
