@@ -22,9 +22,10 @@
 // states). The grid is planned with FFTW_ESTIMATE, so that the planner's timing does not add
 // noise to the seconds; they are rough on a busy machine, the iterations are not.
 //
-// With --preconditioner P only the rows of that value are run. With --algorithm NAME the bench scene is solved by that solver instead of pk (its rows
-// then try each value of `preconditioner` where it has the option), and each --option K=V
-// is set on every solve, after the row's own options.
+// With --preconditioner P only the rows of that value are run. With --algorithm NAME the
+// bench scene is solved by that solver instead of pk (its rows then try each value of
+// `preconditioner` where it has the option), and each --option K=V is set on every solve,
+// after the row's own options.
 //
 // usage: asperity_iteration_scaling [--free] [--challenge] [--levels L] [--preconditioner P]
 //                                   [--algorithm NAME] [--option K=V ...] [N ...]
@@ -98,7 +99,8 @@ int main(int argc, char **argv) {
     } else {
       std::fprintf(stderr,
                    "usage: %s [--free] [--challenge] [--levels L] [--preconditioner P] "
-                   "[--algorithm NAME] [--option K=V ...] [N ...]  (grid sizes 2 to 16384, L a count or auto)\n",
+                   "[--algorithm NAME] [--option K=V ...] [N ...]  (grid sizes 2 to 16384, "
+                   "L a count or auto)\n",
                    argv[0]);
       return 2;
     }

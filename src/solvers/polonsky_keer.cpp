@@ -17,8 +17,9 @@ constexpr double powell_bound = 0.2;
 // The iteration of Polonsky & Keer, on the complementary energy over p >= 0:
 //   gap g of p (the gradient); under load control the penetration closes its mean on the
 //   contact set I_c; the error is the largest projected gap;
-//   t = g + beta t_old on I_c, beta = |g|^2 / |g_old|^2 (g centred), or 0 (steepest descent) where the
-//   restart rule asks for it (below), and wherever t would not descend (g.t <= 0);
+//   t = g + beta t_old on I_c, beta = |g|^2 / |g_old|^2 (g centred), or 0 (steepest
+//   descent) where the restart rule asks for it (below), and wherever t would not descend
+//   (g.t <= 0);
 //   exact line minimum tau = g.t / t.K^-1 t;
 //   p = max(p - tau t, 0) on I_c; pixels outside I_c with g < 0 enter with p = -tau g.
 // When the direction vanishes although pixels interpenetrate (no contact yet, or a gap
@@ -37,9 +38,9 @@ constexpr double powell_bound = 0.2;
 // (restart = powell) the direction restarts only where the old one has lost its
 // conjugacy: while I_c stands, the exact line search leaves g orthogonal to t_old, and a
 // change of I_c shows as a slope along it; the test is Powell's, |beta g.t_old| > 0.2 g.z
-// (z = g without the preconditioner). On the bench scene of docs/performance.md the counts
-// fall 1.5 to 2.8 times and grow about 1.25 times per doubling of the grid instead of 1.8 to
-// 2.4.
+// (z = g without the preconditioner). On the bench scene of docs/performance.md the plain
+// counts fall 1.9 times at 1024^2 and 2.8 times at 2048^2, and grow about 1.25 times per
+// doubling of the grid instead of 1.8 to 2.4.
 void polonsky_keer(DualFormulation &f, Monitor &monitor, bool preconditioned,
                    bool restart_on_entry) {
   const double total = f.total_size();
@@ -107,10 +108,10 @@ AlgorithmSpec polonsky_keer_algorithm() {
                    "periodic half-space) applied to the gap on the contact set and on the "
                    "pixels off it whose gap is negative, which enter along it, one more "
                    "transform pair per iteration and 12 more bytes per pixel (24 on a free "
-                   "substrate) for iterations "
-                   "that grow far less with the grid; none: Polonsky & Keer's conjugate "
-                   "gradient, unpreconditioned as published; auto: fourier (pk's problem is always the convex "
-                   "one of the hard wall; the choice is there as for bugnicourt)"},
+                   "substrate) for iterations that grow far less with the grid; none: "
+                   "Polonsky & Keer's conjugate gradient, unpreconditioned as published; "
+                   "auto: fourier (pk's problem is always the convex one of the hard wall; "
+                   "the choice is there as for bugnicourt)"},
                   {"restart", OptionType::choice, 0.0, 0.0, 0.0, false, {"powell", "entry"},
                    "when the conjugate direction restarts from steepest descent: powell, "
                    "where the gap's slope along the old direction shows it no longer "
