@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// What the benchmark programs share: wall-clock time, the process's peak resident size, and the
-// FFT pair that a solver's time per iteration is compared with.
+// What the benchmark programs share: wall-clock time, the process's peak resident size, the
+// FFT pair that a solver's time per iteration is compared with, and options from the command
+// line.
 #pragma once
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <fstream>
 #include <string>
 
@@ -12,8 +14,20 @@
 #include "core/grid.hpp"
 #include "core/loops.hpp"
 #include "core/threads.hpp"
+#include "solvers/solver.hpp"
 
 namespace bench {
+
+// Sets a solver's option from a command-line word: a number where the whole word reads as
+// one, else the word (a choice, or "auto").
+inline void set_option(asp::Solver &solver, const std::string &name, const std::string &value) {
+  char *end = nullptr;
+  const double number = std::strtod(value.c_str(), &end);
+  if (!value.empty() && *end == '\0')
+    solver.set_option(name, number);
+  else
+    solver.set_option(name, value);
+}
 
 inline double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -39,6 +39,7 @@
 #include <utility>
 #include <vector>
 
+#include "bench/bench_common.hpp"
 #include "core/grid.hpp"
 #include "physics/system.hpp"
 #include "physics/topography.hpp"
@@ -52,16 +53,6 @@ struct Row {
   std::string levels;          // "0", a count or "auto"
   std::string restart;         // pk's restart rule; empty: the default
 };
-
-// A number where the whole word reads as one, else the word (a choice, or "auto").
-void set_option(asp::Solver &solver, const std::string &name, const std::string &value) {
-  char *end = nullptr;
-  const double number = std::strtod(value.c_str(), &end);
-  if (!value.empty() && *end == '\0')
-    solver.set_option(name, number);
-  else
-    solver.set_option(name, value);
-}
 
 bool has_option(const asp::AlgorithmSpec &spec, const std::string &name) {
   for (const auto &option : spec.options)
@@ -169,9 +160,10 @@ int main(int argc, char **argv) {
       } else if (preconditioned) {
         solver.set_option("preconditioner", rows[v].preconditioner);
       }
-      set_option(solver, "levels", rows[v].levels);
+      bench::set_option(solver, "levels", rows[v].levels);
       if (!rows[v].restart.empty()) solver.set_option("restart", rows[v].restart);
-      for (const auto &option : options) set_option(solver, option.first, option.second);
+      for (const auto &option : options)
+        bench::set_option(solver, option.first, option.second);
       system.reset_state();
       if (challenge)
         solver.solve(system, asp::Control::penetration, penetration);

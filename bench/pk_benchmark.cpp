@@ -143,14 +143,7 @@ int main(int argc, char **argv) {
     solver.set_option("tolerance", tolerance);
     // An iteration's cost is measured on the grid itself: no nested grids unless asked for.
     solver.set_option("levels", 0.0);
-    for (const auto &o : options) {
-      char *end = nullptr;
-      const double number = std::strtod(o.second.c_str(), &end);
-      if (end != o.second.c_str() && *end == '\0')
-        solver.set_option(o.first, number);
-      else
-        solver.set_option(o.first, o.second);
-    }
+    for (const auto &o : options) bench::set_option(solver, o.first, o.second);
     // Best of several cold solves, with the history off and on alternately: the machine's
     // noise only ever adds time.
     const int runs = n <= 1024 ? 14 : 6;

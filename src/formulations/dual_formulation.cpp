@@ -289,7 +289,7 @@ double DualFormulation::update_direction_from(Source source, Member member, doub
       grid_.reductions(), n_, [&](std::int64_t i, double *sum, double &max) {
         const double gi = g[i] - shift;
         const bool contact = p[i] > 0.0;
-        const bool in = member(contact, gi);
+        const bool in = member(p[i], gi);
         const double si = in ? source(i, gi) : 0.0;
         const double old = in ? t[i] - t_mean : 0.0;
         const double ti = si + beta * old;
@@ -306,22 +306,20 @@ double DualFormulation::update_direction_from(Source source, Member member, doub
 }
 
 double DualFormulation::update_direction(double beta) {
-  enter_along_direction_ = false;
   // The old direction made mean-free on the current contact set (load control), so that a
   // step along t keeps the mean pressure and the step length needs no centred product.
   const double t_mean = control_ == Control::mean_pressure && contacts_ > 0.0
                             ? direction_sum_on_contact_ / contacts_
                             : 0.0;
   return update_direction_from([](std::int64_t, double gi) { return gi; },
-                               [](bool contact, double) { return contact; }, t_mean, beta);
+                               [](double pi, double) { return pi > 0.0; }, t_mean, beta);
 }
 
 double DualFormulation::update_preconditioned_direction(double beta) {
-  enter_along_direction_ = true;
   const double *z = preconditioned_.data();
   const double z_mean = preconditioned_mean_;
   return update_direction_from([&](std::int64_t i, double) { return z[i] - z_mean; },
-                               [](bool contact, double gi) { return contact | (gi < 0.0); },
+                               [](double pi, double gi) { return in_free_set(pi, gi); },
                                free_direction_mean_, beta);
 }
 
@@ -343,7 +341,7 @@ bool DualFormulation::step(double tau) {
   const double *g = state_.gap.data();
   const double *t = direction_.data();
   const double shift = shift_, scale = scale_;
-  const bool along = enter_along_direction_;
+  const bool along = preconditioned_steps();
   // Step, project onto p >= 0, and let pixels with a negative gap enter the contact set
   // (along the preconditioned direction, which covers them, or with -tau g).
   // The last sum counts pixels whose new pressure is not the plain step (clipped or

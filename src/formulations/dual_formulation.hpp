@@ -86,8 +86,8 @@ class DualFormulation final : public ScaledFormulation {
   // t.K^-1 t, the curvature of the energy along t (one forward transform, by Parseval).
   double curvature();
   // p <- max(p - tau t, 0) on the contact set; pixels outside it with a negative gap enter
-  // with pressure -tau g (after update_preconditioned_direction: with max(-tau t, 0), t being
-  // defined there). Under load control the result is rescaled to the target mean.
+  // with pressure -tau g (with the Fourier preconditioner's steps: with max(-tau t, 0), t
+  // covering them). Under load control the result is rescaled to the target mean.
   // Returns true if pixels entered the contact set.
   bool step(double tau);
   // When the direction vanishes (no contact, or a gap already uniform on the contact set)
@@ -120,13 +120,22 @@ class DualFormulation final : public ScaledFormulation {
 
  private:
   double scaled_height(std::int64_t i) const { return (heights_[i] - max_height_) / length_unit_; }
+  // Whether a pixel is in the preconditioned iteration's free set N: in contact, or off it
+  // with a negative (centred) gap.
+  static bool in_free_set(double pressure, double centred_gap) {
+    return (pressure > 0.0) | (centred_gap < 0.0);
+  }
+  // Whether the steps are the preconditioned ones (z allocated), whose pixels off the contact
+  // set enter along the direction.
+  bool preconditioned_steps() const { return !preconditioned_.empty(); }
   void gap_of(const double *pressure, double pressure_scale, double *gap);
   // The gap of the current iterate into gap (scaled, before centring); with_energy also
   // returns sum_i p_i u_i, p the pressure array and u the scaled displacement it makes.
   double gap_of_iterate(double *gap, bool with_energy);
   void load_state();
   // The pass of update_direction and update_preconditioned_direction: t = source(i, g_i) +
-  // beta (t_old - t_mean) on the pixels that are members (of the contact set, or of N), 0
+  // beta (t_old - t_mean) on the pixels that are members, member(p_i, g_i) (of the contact
+  // set, or of N), 0
   // elsewhere, g_i the centred gap; the descent g.t into descent_ and beta g.t_old into
   // old_slope_; returns the error of the current iterate.
   template <class Source, class Member>
@@ -138,9 +147,6 @@ class DualFormulation final : public ScaledFormulation {
   Field preconditioned_;    // z = P K P r (the Fourier preconditioner's residual)
   double preconditioned_mean_ = 0.0;  // mean of z on N, removed under load control
   double free_direction_mean_ = 0.0;  // mean of t_old on N, removed under load control
-  // Whether the last direction was the preconditioned one, whose pixels off the contact set
-  // enter along it.
-  bool enter_along_direction_ = false;
   Spectrum spectrum_;       // work; holds the spectrum of t between curvature() and the next gap
   Spectrum pressure_spectrum_;  // the spectrum of the pressure array
   Spectrum height_spectrum_;  // FFT of the scaled (h - max h), over the transform's points

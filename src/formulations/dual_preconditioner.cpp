@@ -16,7 +16,7 @@ double DualFormulation::precondition() {
   // with zeros).
   loops::for_each(n_, [&](std::int64_t i) {
     const double gi = g[i] - shift;
-    z[i] = (p[i] > 0.0) | (gi < 0.0) ? gi : 0.0;
+    z[i] = in_free_set(p[i], gi) ? gi : 0.0;
   });
   // The work spectrum that precondition() takes is free here: the gap's transform is done,
   // and curvature() transforms the new direction into it afterwards.
@@ -27,7 +27,7 @@ double DualFormulation::precondition() {
   // on N.
   const auto sums = loops::sums<5>(grid_.reductions(), n_, [&](std::int64_t i, double *sum) {
     const double gi = g[i] - shift;
-    const bool in = (p[i] > 0.0) | (gi < 0.0);
+    const bool in = in_free_set(p[i], gi);
     const double r = in ? gi : 0.0;
     const double zi = in ? z[i] : 0.0;
     sum[0] += zi;

@@ -174,8 +174,8 @@ TEST(FourierPreconditioner, RoughPeriodicScene) {
 // pressure far from the solution's contact set. pk's preconditioned iteration once let pixels off the
 // contact set enter along the gap, -tau g, while the set's pixels moved along the
 // preconditioned direction: the two disagreed, every step admitted and clipped pixels by
-// the thousand, and the contact set stayed at 86 % of the surface for 1000 iterations (at 0.05; at 0.02 it
-// converged after 72, by chance).
+// the thousand, and the contact set stayed at 86 % of the surface for 1000 iterations (at
+// 0.05; at 0.02 it converged after 72, by chance).
 // Entering along the preconditioned direction, pixels whose gap is negative taken into it,
 // it converges to the plain iteration's state.
 TEST(FourierPreconditioner, RoughSceneWithALargeContactArea) {
