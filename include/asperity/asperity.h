@@ -807,18 +807,19 @@ ASP_EXPORT int asp_solver_describe(const asp_solver *solver, char *buffer, int64
  *                     Under penetration control the coarse levels keep the rigid body where
  *                     it is; under mean-pressure or mean-gap control they take the same
  *                     value. "auto" halves while both sides stay at least 64 pixels (none on
- *                     an odd size or a distributed grid), and reads back as -1 from
+ *                     an odd size), and reads back as -1 from
  *                     asp_solver_get_option and as "auto" from asp_solver_get_option_string
  *                     (a number reads back only from the former). An explicit count the grid
- *                     cannot take (an odd size on the way, a side below 8 pixels, or a grid
- *                     distributed over processes) is refused by asp_solver_solve and
+ *                     cannot take (an odd size on the way, or a side below 8 pixels) is
+ *                     refused by asp_solver_solve and
  *                     asp_solver_supports with ASP_ERR_UNSUPPORTED naming the option and
  *                     why. The report and the history count the iterations and evaluations
  *                     of the system's own grid, the seconds of all levels, and the transforms
  *                     of all levels, a coarse one's weighted by its pixels over the system's
  *                     (one transform of a grid halved per axis counts a quarter; the
  *                     history's first row holds the coarse levels' already); the progress
- *                     callback is called on the system's grid only;
+ *                     callback is called on the system's grid only. A distributed grid's
+ *                     coarse grids are distributed over the same processes;
  * and its own options (asp_solver_describe lists them). Integer options take whole numbers
  * given as doubles. An unknown name or a value outside the range is refused with
  * ASP_ERR_INVALID_ARGUMENT, naming the option and listing the valid names or the range;

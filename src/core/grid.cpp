@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "core/grid.hpp"
 
+#include <algorithm>
 #include <string>
 
 #include <cfloat>
@@ -114,6 +115,42 @@ SpectralLayout Grid::half_spectrum() const {
     return SpectralLayout(Packing::transposed_half_spectrum, nx_, ny_, lx_, ly_,
                           spectral_columns_, column_offset_);
   return SpectralLayout(Packing::half_spectrum, nx_, ny_, lx_, ly_);
+}
+
+std::shared_ptr<Grid> Grid::halved() const {
+  const bool two_d = dimension_ == 2;
+  if (nx_ % 2 != 0 || (two_d && ny_ % 2 != 0))
+    throw Error(Status::invalid_argument,
+                "a grid of " + std::to_string(nx_) + " x " + std::to_string(ny_) +
+                    " pixels cannot be halved per axis (odd size)");
+  const std::int64_t nx = nx_ / 2, ny = two_d ? ny_ / 2 : 1;
+  std::shared_ptr<Grid> half = partition_ ? create_distributed(partition_, nx, ny, lx_, ly_)
+                                          : create(dimension_, nx, ny, lx_, ly_);
+  half->set_threads(threads());
+  half->set_fft_planning(fft_planning());
+  return half;
+}
+
+void Grid::gather_rows(const double *local, std::int64_t first, std::int64_t count,
+                       double *out) const {
+  if (partition_) {
+    partition_->gather_rows(local, row_offset_, local_rows_, nx_, first, count, out);
+    return;
+  }
+  std::copy(local + first * nx_, local + (first + count) * nx_, out);
+}
+
+void Grid::gather_spectral_columns(const Complex *local, std::int64_t first, std::int64_t count,
+                                   Complex *out) const {
+  if (!partition_)
+    throw Error(Status::unsupported,
+                "a serial grid's spectrum is stored by rows, not by columns, and all of it is "
+                "local");
+  // A complex entry is two doubles (std::complex's layout), so a column of ny entries is a
+  // row of 2 ny doubles.
+  partition_->gather_rows(reinterpret_cast<const double *>(local), column_offset_,
+                          spectral_columns_, 2 * ny_, first, count,
+                          reinterpret_cast<double *>(out));
 }
 
 void Grid::require_serial(const char *what) const {

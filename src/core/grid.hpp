@@ -57,10 +57,28 @@ class Grid {
   std::int64_t local_pixels() const { return nx_ * local_rows_; }
   // The partition of a distributed grid, null otherwise.
   const Partition *partition() const { return partition_.get(); }
+  // A grid of half the pixels per axis (along x only in 1D) on the same box, distributed over
+  // the same processes as this one, with its threads and FFT planning. Collective on a
+  // distributed grid. The sizes must be even (Error(invalid_argument) otherwise).
+  std::shared_ptr<Grid> halved() const;
+  // Rows [first, first + count) of a field of the grid, of which `local` holds this process's
+  // rows, into out[0..count * nx). Collective on a distributed grid, where each process asks
+  // for the rows it needs; a copy on a serial one.
+  void gather_rows(const double *local, std::int64_t first, std::int64_t count,
+                   double *out) const;
 
   // The r2c half spectrum of the grid, kx in [0, nx/2]: all of it by rows on a serial grid;
   // on a distributed one this process's columns kx of it, transposed (core/partition.hpp).
   SpectralLayout half_spectrum() const;
+  // A distributed grid's columns of the half spectrum that this process holds: kx in
+  // [column_offset, column_offset + spectral_columns). 0 and 0 on a serial grid.
+  std::int64_t column_offset() const { return column_offset_; }
+  std::int64_t spectral_columns() const { return spectral_columns_; }
+  // Columns kx in [first, first + count) of a distributed grid's half spectrum, ny entries
+  // each, of which `local` holds this process's columns, into out[0..count * ny). Collective;
+  // Error(unsupported) on a serial grid, whose spectrum is stored by rows, all of it local.
+  void gather_spectral_columns(const Complex *local, std::int64_t first, std::int64_t count,
+                               Complex *out) const;
   std::int64_t local_spectral() const {
     return partition_ ? spectral_columns_ * ny_ : (nx_ / 2 + 1) * local_rows_;
   }

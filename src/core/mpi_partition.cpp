@@ -398,6 +398,43 @@ class MpiPartition final : public Partition {
     MPI_Waitall(pending, requests, MPI_STATUSES_IGNORE);
   }
 
+  void gather_rows(const double *mine, std::int64_t offset, std::int64_t rows,
+                   std::int64_t width, std::int64_t first, std::int64_t count,
+                   double *out) const override {
+    // Every process's rows and the rows it asks for, then one exchange: to each process the
+    // rows of this one it asks for, from each the rows of it this one asks for.
+    const std::int64_t sent[4] = {offset, rows, first, count};
+    const std::size_t n = static_cast<std::size_t>(ranks_);
+    std::vector<std::int64_t> all(4 * n);
+    MPI_Allgather(sent, 4, MPI_INT64_T, all.data(), 4, MPI_INT64_T, communicator_);
+    // MPI counts are ints. Every process sees the same sizes, so all refuse alike.
+    for (std::size_t r = 0; r < n; ++r)
+      if (std::max(all[4 * r + 1], all[4 * r + 3]) * width > std::numeric_limits<int>::max())
+        throw Error(Status::unsupported,
+                    "a distributed field moves between slabs in pieces of at most " +
+                        std::to_string(std::numeric_limits<int>::max()) +
+                        " values per process; this one has more");
+    std::vector<int> send_counts(n, 0), send_displacements(n, 0), receive_counts(n, 0),
+        receive_displacements(n, 0);
+    for (std::size_t r = 0; r < n; ++r) {
+      const std::int64_t held = all[4 * r], held_end = held + all[4 * r + 1];
+      const std::int64_t asked = all[4 * r + 2], asked_end = asked + all[4 * r + 3];
+      const std::int64_t to_send = std::min(offset + rows, asked_end) - std::max(offset, asked);
+      if (to_send > 0) {
+        send_counts[r] = static_cast<int>(to_send * width);
+        send_displacements[r] = static_cast<int>((std::max(offset, asked) - offset) * width);
+      }
+      const std::int64_t to_receive = std::min(held_end, first + count) - std::max(held, first);
+      if (to_receive > 0) {
+        receive_counts[r] = static_cast<int>(to_receive * width);
+        receive_displacements[r] = static_cast<int>((std::max(held, first) - first) * width);
+      }
+    }
+    MPI_Alltoallv(mine, send_counts.data(), send_displacements.data(), MPI_DOUBLE, out,
+                  receive_counts.data(), receive_displacements.data(), MPI_DOUBLE,
+                  communicator_);
+  }
+
   // Every process's values, then the totals in rank order: the same bits on every process
   // whatever the collective algorithm of the MPI library.
   void combine_sums(double *values, int count) const override {

@@ -50,6 +50,14 @@ class Partition : public Reductions {
   // or ends the grid. For differences between neighbouring rows across slabs.
   virtual void next_row(const double *field, std::int64_t nx, std::int64_t ny,
                         double *row) const = 0;
+  // Collective: rows [first, first + count) of a field of `width` doubles a row, whose rows
+  // are shared among the processes (this one holding rows [offset, offset + rows) of it, in
+  // `mine`), into out[0..count * width). Each process asks for the rows it needs, which the
+  // processes together hold. For fields that move between grids of other slabs (the
+  // restriction and prolongation of nested grids).
+  virtual void gather_rows(const double *mine, std::int64_t offset, std::int64_t rows,
+                           std::int64_t width, std::int64_t first, std::int64_t count,
+                           double *out) const = 0;
   // Collective: each process says whether its part of a call failed (failure is null if
   // not). If any did, every process throws the Error of the lowest failing rank, its
   // message prefixed with that rank; otherwise it returns.

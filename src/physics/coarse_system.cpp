@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <vector>
 
 #include "core/error.hpp"
 #include "core/loops.hpp"
@@ -11,8 +12,6 @@
 namespace asp {
 
 std::string coarsening_obstacle(const Grid &grid, std::int64_t smallest) {
-  if (grid.partition() != nullptr)
-    return "the grid is distributed over processes, and nested grids need a serial grid";
   const bool two_d = grid.dimension() == 2;
   if (grid.nx() % 2 != 0 || (two_d && grid.ny() % 2 != 0))
     return "the grid's " + std::to_string(grid.nx()) +
@@ -25,29 +24,61 @@ std::string coarsening_obstacle(const Grid &grid, std::int64_t smallest) {
   return "";
 }
 
+namespace {
+
+// The entry of `from`'s half spectrum (in `spectrum`) at to's entry (kx, signed ky), or 0
+// where the mode is not kept: both grids hold it strictly below the smaller one's Nyquist
+// wavevector per axis (2|k| < n: on a 1D grid, ny = 1, that leaves ky = 0 only). `at(kx,
+// ky)` reads from's stored entry at kx and row or column index ky in [0, from.ny).
+template <class At>
+Complex kept_mode(const Grid &from, const Grid &to, std::int64_t kx, std::int64_t signed_ky,
+                  At &&at) {
+  const std::int64_t sx = std::min(from.nx(), to.nx()), sy = std::min(from.ny(), to.ny());
+  if (2 * kx >= sx || 2 * std::llabs(signed_ky) >= sy) return Complex(0.0, 0.0);
+  return at(kx, signed_ky < 0 ? signed_ky + from.ny() : signed_ky);
+}
+
+std::int64_t signed_wavenumber(std::int64_t k, std::int64_t n) { return 2 * k <= n ? k : k - n; }
+
+}  // namespace
+
 void resample_field(const Grid &from, const Grid &to, const double *in, double *out) {
   Field source = from.make_field();
   std::copy(in, in + from.local_pixels(), source.begin());
   Spectrum a = from.make_spectrum();
   from.fft().forward(source.data(), a.data());
-  // The modes both grids hold, strictly below the smaller one's Nyquist wavevector per axis
-  // (2|k| < n: on a 1D grid, ny = 1, that leaves ky = 0 only).
-  const std::int64_t sx = std::min(from.nx(), to.nx()), sy = std::min(from.ny(), to.ny());
-  const std::int64_t to_row = to.nx() / 2 + 1, from_row = from.nx() / 2 + 1;
-  const std::int64_t to_ny = to.ny(), from_ny = from.ny();
   Spectrum b = to.make_spectrum();
-  const Complex *sa = a.data();
   Complex *sb = b.data();
   // Both transforms are unnormalised: backward(forward(f)) = N_from f on `from`, and the
   // same coefficients transformed back on `to` make N_from times the resampled field.
   const double scale = 1.0 / static_cast<double>(from.n_pixels());
-  loops::for_each(to.local_spectral(), [&](std::int64_t q) {
-    const std::int64_t kx = q % to_row, ky = q / to_row;
-    const std::int64_t signed_ky = 2 * ky <= to_ny ? ky : ky - to_ny;
-    const bool kept = 2 * kx < sx && 2 * std::llabs(signed_ky) < sy;
-    const std::int64_t from_ky = signed_ky < 0 ? signed_ky + from_ny : signed_ky;
-    sb[q] = kept ? scale * sa[kx + from_row * from_ky] : Complex(0.0, 0.0);
-  });
+  if (to.partition() == nullptr) {
+    // Serial: both spectra by rows, S[kx + (nx/2+1) ky], all of them here.
+    const std::int64_t to_row = to.nx() / 2 + 1, from_row = from.nx() / 2 + 1;
+    const Complex *sa = a.data();
+    const auto at = [&](std::int64_t kx, std::int64_t ky) { return sa[kx + from_row * ky]; };
+    loops::for_each(to.local_spectral(), [&](std::int64_t q) {
+      const std::int64_t kx = q % to_row, ky = signed_wavenumber(q / to_row, to.ny());
+      sb[q] = scale * kept_mode(from, to, kx, ky, at);
+    });
+  } else {
+    // Distributed: both spectra by columns kx, S[ky + ny kx], each process holding a slab of
+    // columns; this one's columns of `to` need the same columns of `from`, which other
+    // processes may hold (those beyond from's last column, nx/2, are not kept).
+    const std::int64_t first = to.column_offset(), columns = to.spectral_columns();
+    const std::int64_t held = std::max<std::int64_t>(
+        0, std::min(first + columns, from.nx() / 2 + 1) - first);
+    Spectrum needed(static_cast<std::size_t>(held * from.ny()));
+    from.gather_spectral_columns(a.data(), held > 0 ? first : 0, held, needed.data());
+    const Complex *sa = needed.data();
+    const auto at = [&](std::int64_t kx, std::int64_t ky) {
+      return sa[ky + from.ny() * (kx - first)];
+    };
+    loops::for_each(to.local_spectral(), [&](std::int64_t q) {
+      const std::int64_t kx = first + q / to.ny(), ky = signed_wavenumber(q % to.ny(), to.ny());
+      sb[q] = scale * kept_mode(from, to, kx, ky, at);
+    });
+  }
   Field target = to.make_field();
   to.fft().backward(b.data(), target.data());
   std::copy(target.begin(), target.end(), out);
@@ -57,11 +88,7 @@ std::unique_ptr<System> coarse_system(const System &fine) {
   const Grid &grid = fine.grid();
   const std::string obstacle = coarsening_obstacle(grid, 2);
   if (!obstacle.empty()) throw Error(Status::unsupported, "nested grids: " + obstacle);
-  const bool two_d = grid.dimension() == 2;
-  std::shared_ptr<Grid> coarse_grid = Grid::create(
-      grid.dimension(), grid.nx() / 2, two_d ? grid.ny() / 2 : 1, grid.lx(), grid.ly());
-  coarse_grid->set_threads(grid.threads());
-  coarse_grid->set_fft_planning(grid.fft_planning());
+  std::shared_ptr<Grid> coarse_grid = grid.halved();
 
   const Substrate &substrate = fine.substrate();
   // A periodic substrate's law (the half-space's, a layer's) goes with the body; the free
@@ -99,13 +126,29 @@ void prolong_pressure(const Grid &coarse, const Grid &fine, bool periodic, const
   const auto next = [periodic](std::int64_t k, std::int64_t n) {
     return k + 1 < n ? k + 1 : periodic ? 0 : k;
   };
+  // The coarse rows this process's fine rows fall on, and the row after the last of them:
+  // rows [first, first + count), and row 0 again where that row wraps around (on a
+  // distributed grid other processes may hold them).
+  const std::int64_t rows = fine.local_rows(), offset = fine.row_offset();
+  const std::int64_t first = rows > 0 ? offset / 2 : 0;
+  const std::int64_t last = rows > 0 ? (offset + rows - 1) / 2 : -1;
+  const std::int64_t after = two_d && rows > 0 ? next(last, cny) : last;
+  const std::int64_t count = std::max(last, after == 0 ? last : after) - first + 1;
+  const std::int64_t wrapped = after == 0 && first > 0 ? 1 : 0;
+  std::vector<double> near(static_cast<std::size_t>((count + wrapped) * cnx));
+  coarse.gather_rows(in, first, count, near.data());
+  coarse.gather_rows(in, 0, wrapped, near.data() + count * cnx);
+  const auto row = [&](std::int64_t cj) {
+    return near.data() + cnx * (cj >= first ? cj - first : count);
+  };
   loops::for_each(fine.local_pixels(), [&](std::int64_t f) {
-    const std::int64_t i = f % nx, j = two_d ? f / nx : 0;
+    const std::int64_t i = f % nx, j = two_d ? offset + f / nx : 0;
     const std::int64_t ci = i / 2, cj = j / 2;
     const std::int64_t ci1 = next(ci, cnx), cj1 = two_d ? next(cj, cny) : cj;
     const double wx = i % 2 == 0 ? 0.0 : 0.5, wy = j % 2 == 0 ? 0.0 : 0.5;
-    out[f] = (1.0 - wy) * ((1.0 - wx) * in[ci + cnx * cj] + wx * in[ci1 + cnx * cj]) +
-             wy * ((1.0 - wx) * in[ci + cnx * cj1] + wx * in[ci1 + cnx * cj1]);
+    const double *r0 = row(cj), *r1 = row(cj1);
+    out[f] = (1.0 - wy) * ((1.0 - wx) * r0[ci] + wx * r0[ci1]) +
+             wy * ((1.0 - wx) * r1[ci] + wx * r1[ci1]);
   });
 }
 

@@ -22,12 +22,12 @@
 namespace asp {
 
 // Why the grid cannot be coarsened by 2 per axis into one of at least `smallest` pixels a
-// side (along x only on a 1D grid), or the empty text if it can. Only serial grids: the
-// coarse grid of a distributed one would need the rows of other processes.
+// side (along x only on a 1D grid), or the empty text if it can.
 std::string coarsening_obstacle(const Grid &grid, std::int64_t smallest);
 
 // The fine system restricted to the coarse grid (see above), with the state reset. The
-// coarse grid has the fine one's threads and FFT planning. Throws Error(unsupported) where
+// coarse grid has the fine one's threads and FFT planning, and is distributed over the fine
+// one's processes (collective then). Throws Error(unsupported) where
 // coarsening_obstacle(fine.grid(), 2) is not empty.
 std::unique_ptr<System> coarse_system(const System &fine);
 
@@ -50,13 +50,15 @@ void prolong_state(const System &coarse, System &fine);
 // The coarse pressure on the fine grid (2 pixels per coarse one along each axis): a coarse
 // pixel's value at the fine pixel it shares its corner with, the mean of the two or four
 // neighbours at the others; beyond the last coarse pixel the first one (periodic) or the
-// last one again (free: pressure does not wrap around the box).
+// last one again (free: pressure does not wrap around the box). Collective on distributed
+// grids, whose coarse rows under this process's fine rows other processes may hold.
 void prolong_pressure(const Grid &coarse, const Grid &fine, bool periodic, const double *in,
                       double *out);
 
-// A field of one grid on another of the same box and dimension (serial), by its spectrum:
-// the modes both grids hold below the smaller one's Nyquist wavevector are kept, the others
-// are zero. Restriction and prolongation in one.
+// A field of one grid on another of the same box and dimension, distributed over the same
+// processes or both serial, by its spectrum: the modes both grids hold below the smaller
+// one's Nyquist wavevector are kept, the others are zero. Restriction and prolongation in
+// one. Collective on distributed grids.
 void resample_field(const Grid &from, const Grid &to, const double *in, double *out);
 
 }  // namespace asp

@@ -21,9 +21,9 @@ constexpr std::int64_t smallest_side = 8;
 
 // How many coarser levels a solve of the system takes with the option's value: an explicit
 // number as it is, refused with Error(unsupported) naming the option and why where the grid
-// cannot be halved that often (distributed, an odd size, or a side below smallest_side);
-// auto: as many halvings as leave both sides at least auto_smallest_side, none on a
-// distributed grid or one of odd size. A solve whose state carries no pressure (a fresh
+// cannot be halved that often (an odd size, or a side below smallest_side); auto: as many
+// halvings as leave both sides at least auto_smallest_side, none on a grid of odd size. A
+// distributed grid's coarse grids are distributed over the same processes. A solve whose state carries no pressure (a fresh
 // system, after a reset or a new topography) starts the cascade; one from a state with
 // pressure warm-starts from it on its own grid, as without levels (see solve_coarse_levels).
 std::int64_t nested_levels(const System &system, double levels);

@@ -181,6 +181,7 @@ struct Outcome {
   double scalars[4] = {0, 0, 0, 0};  // mean pressure, mean gap, contact fraction, elastic energy
   int converged = 0;
   int64_t iterations = 0;
+  double transforms = 0.0;  // of every level, a coarse level's weighted by its pixels
   double stiffness = 0.0;  // asp_solver_normal_stiffness of the converged state
 };
 
@@ -212,6 +213,7 @@ Outcome solve(asp_grid *grid, int64_t count, const std::vector<double> &heights,
              std::string("solve ") + c.algorithm);
   require_ok(asp_solver_converged(solver, &out.converged), "converged");
   require_ok(asp_solver_iterations(solver, &out.iterations), "iterations");
+  require_ok(asp_solver_get(solver, ASP_REPORT_TRANSFORMS, &out.transforms), "transforms");
   if (out.converged)
     require_ok(asp_solver_normal_stiffness(solver, system, &out.stiffness), "normal stiffness");
   out.pressure.resize(static_cast<size_t>(count));
@@ -278,6 +280,12 @@ void solver_gives_the_serial_result(const Case &c, int64_t nx, int64_t ny) {
         1e-10 * std::fabs(serial.scalars[k]) + 1e-300)
       fail(name + ": scalar " + std::to_string(k) + " " + std::to_string(serial.scalars[k]) +
            " vs " + std::to_string(distributed.scalars[k]));
+  // Nested grids: the same levels solved, with the same iterations on each (a distributed
+  // solve that skipped its levels would count other transforms).
+  if (std::strstr(c.options, "levels=") != nullptr &&
+      std::fabs(serial.transforms - distributed.transforms) > 1e-12 * serial.transforms)
+    fail(name + ": transforms " + std::to_string(serial.transforms) + " vs " +
+         std::to_string(distributed.transforms));
   // The stiffness: conjugate gradients whose sums run in another order, on states that agree
   // to 1e-10, with the same contact set.
   if (std::fabs(serial.stiffness - distributed.stiffness) > 1e-9 * std::fabs(serial.stiffness))
@@ -424,11 +432,12 @@ int default_threads_are(int expected) {
 }
 
 // ---- nested grids --------------------------------------------------------------------------
-// A distributed grid is not coarsened (its coarse grid would need other processes' rows):
-// an explicit count of levels is refused on every process alike, naming the option and why,
-// and "auto" takes none, solving as without levels.
-void nested_levels_are_refused_on_distributed_grids() {
-  Grids g(64, 64);
+// A distributed grid is coarsened like a serial one (its coarse grids are distributed over the
+// same processes, and restriction and prolongation move rows and spectral columns between
+// their slabs); a count the grid cannot take (an odd size) is refused on every process alike,
+// naming the option and why, and "auto" then takes none, solving as without levels.
+void nested_levels_are_refused_where_the_grid_cannot_be_halved() {
+  Grids g(45, 37);
   std::vector<double> h = rough(g.distributed, g.slab.pixels, 5);
   asp_system *system = nullptr;
   asp_solver *solver = nullptr;
@@ -439,18 +448,19 @@ void nested_levels_are_refused_on_distributed_grids() {
   const int supports = asp_solver_supports(solver, system, ASP_CONTROL_MEAN_PRESSURE);
   const std::string message = asp_last_error_message();
   if (supports != ASP_ERR_UNSUPPORTED || message.find("option 'levels'") == std::string::npos ||
-      message.find("distributed") == std::string::npos)
-    fail("levels 1 on a distributed grid: status " + std::to_string(supports) + ", '" +
-         message + "'");
+      message.find("odd") == std::string::npos)
+    fail("levels 1 on a distributed grid of odd size: status " + std::to_string(supports) +
+         ", '" + message + "'");
   const int solved = asp_solver_solve(solver, system, ASP_CONTROL_MEAN_PRESSURE, 0.01);
   if (solved != ASP_ERR_UNSUPPORTED)
-    fail("a solve with levels 1 on a distributed grid: status " + std::to_string(solved));
+    fail("a solve with levels 1 on a distributed grid of odd size: status " +
+         std::to_string(solved));
   require_ok(asp_solver_set_option_string(solver, "levels", "auto"), "levels auto");
   require_ok(asp_solver_solve(solver, system, ASP_CONTROL_MEAN_PRESSURE, 0.01),
-             "a solve with levels auto on a distributed grid");
+             "a solve with levels auto on a distributed grid of odd size");
   int converged = 0;
   require_ok(asp_solver_converged(solver, &converged), "converged");
-  if (!converged) fail("levels auto on a distributed grid: not converged");
+  if (!converged) fail("levels auto on a distributed grid of odd size: not converged");
   asp_solver_destroy(solver);
   asp_system_destroy(system);
 }
@@ -474,7 +484,7 @@ int main(int argc, char **argv) {
   generators_give_the_serial_surface(16, 2);
   generators_give_the_serial_surface(2, 45);
   bad_input_on_one_process_fails_on_all();
-  nested_levels_are_refused_on_distributed_grids();
+  nested_levels_are_refused_where_the_grid_cannot_be_halved();
 
   const Case cases[] = {
       {"pk", "", Wall::hard, ASP_CONTROL_MEAN_PRESSURE},
@@ -496,8 +506,8 @@ int main(int argc, char **argv) {
   // The options of the iterations against the grid: pk's defaults (the Fourier
   // preconditioner, Powell's restarts, levels auto, which takes none on these grids) are
   // the cases above; here pk as published, and the preconditioner where it is not the
-  // default, and "auto" levels on the other solvers (none on a distributed grid or on a grid
-  // of 64 a side: the serial solve takes none either).
+  // default, and "auto" levels on the other solvers (none on a grid of 64 a side or of odd
+  // size, serial or distributed; nested grids below).
   const Case option_cases[] = {
       {"pk", "", Wall::hard, ASP_CONTROL_MEAN_PRESSURE, false,
        " preconditioner=none restart=entry levels=0"},
@@ -516,6 +526,25 @@ int main(int argc, char **argv) {
   solver_gives_the_serial_result(cases[5], 16, 2);
   solver_gives_the_serial_result(cases[0], 2, 45);
   solver_gives_the_serial_result(cases[6], 2, 45);
+  // Nested grids: every formulation and substrate, the adhesive continuation, and slabs of
+  // the coarse grids that do not line up with halves of the fine ones (64 rows over three
+  // processes are 22, 21 and 21; their 32 coarse rows 11, 11 and 10; the 8 rows of a 32 x 16
+  // grid's coarse level leave some processes' fine rows on other processes' coarse rows).
+  const Case nested_cases[] = {
+      {"pk", "", Wall::hard, ASP_CONTROL_MEAN_PRESSURE, false, " levels=2"},
+      {"pk", "", Wall::hard, ASP_CONTROL_PENETRATION, true, " levels=2"},
+      {"bugnicourt", "gap", Wall::adhesive, ASP_CONTROL_PENETRATION, false,
+       " preconditioner=fourier levels=2"},
+      {"bugnicourt", "pressure", Wall::hard, ASP_CONTROL_MEAN_PRESSURE, true, " levels=2"},
+      {"lbfgsb", "gap", Wall::adhesive, ASP_CONTROL_PENETRATION, false, " levels=2"},
+      {"lbfgs", "", Wall::soft, ASP_CONTROL_PENETRATION, false, " levels=2"},
+      {"fire", "", Wall::soft, ASP_CONTROL_PENETRATION, true, " levels=2"},
+  };
+  for (const Case &c : nested_cases) solver_gives_the_serial_result(c, 64, 64);
+  for (Case c : {nested_cases[0], nested_cases[2]}) {
+    c.options = " levels=1";  // 16 x 8 pixels: a smaller coarse grid would be refused
+    solver_gives_the_serial_result(c, 32, 16);
+  }
   // One row: every process but one holds none, and the gap's unknowns are only its pixels.
   solver_gives_the_serial_result(cases[5], 64, 1);
   solver_gives_the_serial_result(cases[10], 64, 1);
