@@ -15,6 +15,10 @@ namespace asp {
 std::int64_t nested_levels(const System &system, double levels) {
   if (levels == 0.0) return 0;
   const bool automatic = levels == levels_auto;
+  // A coarse grid calls a user's potential with its own pixels, fewer than the system's: a
+  // callback that holds data per pixel would misread them. An explicit count is the user's
+  // say that it does not.
+  if (automatic && system.interaction().potential_from_callback()) return 0;
   const std::int64_t smallest = automatic ? auto_smallest_side : smallest_side;
   const std::int64_t wanted = automatic ? 64 : static_cast<std::int64_t>(levels);
   std::int64_t nx = system.grid().nx(), ny = system.grid().ny();

@@ -22,7 +22,8 @@ constexpr std::int64_t smallest_side = 8;
 // How many coarser levels a solve of the system takes with the option's value: an explicit
 // number as it is, refused with Error(unsupported) naming the option and why where the grid
 // cannot be halved that often (an odd size, or a side below smallest_side); auto: as many
-// halvings as leave both sides at least auto_smallest_side, none on a grid of odd size. A
+// halvings as leave both sides at least auto_smallest_side, none on a grid of odd size or
+// with a user's potential (the coarse grids would call it with their own pixels). A
 // distributed grid's coarse grids are distributed over the same processes. A solve whose state carries no pressure (a fresh
 // system, after a reset or a new topography) starts the cascade; one from a state with
 // pressure warm-starts from it on its own grid, as without levels (see solve_coarse_levels).

@@ -377,6 +377,27 @@ TEST(NestedGrids, AutoHalvesWhileBothSidesStayAt64) {
             4);
 }
 
+// A coarse grid calls a user's potential with its own pixels, which a callback holding data
+// per pixel would misread: "auto" takes no level there, and an explicit count still does.
+int zero_potential(std::int64_t n, const double *, double *phi, double *dphi, double *d2phi,
+                   void *) {
+  for (std::int64_t i = 0; i < n; ++i) {
+    phi[i] = dphi[i] = 0.0;
+    if (d2phi != nullptr) d2phi[i] = 0.0;
+  }
+  return 0;
+}
+
+TEST(NestedGrids, AutoTakesNoLevelWithAUsersPotential) {
+  asp::System system(asp_test::grid_2d(256, 256, 1.0, 1.0), 1.0);
+  EXPECT_EQ(asp::nested_levels(system, asp::levels_auto), 2);
+  system.set_user_potential(zero_potential, nullptr, true);
+  EXPECT_EQ(asp::nested_levels(system, asp::levels_auto), 0);
+  EXPECT_EQ(asp::nested_levels(system, 2.0), 2);
+  system.set_hard_wall();
+  EXPECT_EQ(asp::nested_levels(system, asp::levels_auto), 2);
+}
+
 // An explicit count the grid cannot take is refused before anything changes, naming the
 // option and why; the same request is refused by check_supported (asp_solver_supports).
 TEST(NestedGrids, LevelsTheGridCannotTakeAreRefusedNamingTheOption) {
