@@ -807,7 +807,9 @@ ASP_EXPORT int asp_solver_describe(const asp_solver *solver, char *buffer, int64
  *                     Under penetration control the coarse levels keep the rigid body where
  *                     it is; under mean-pressure or mean-gap control they take the same
  *                     value. "auto" halves while both sides stay at least 64 pixels (none on
- *                     an odd size), and reads back as -1 from
+ *                     an odd size, and none with a user's potential, which the coarse
+ *                     grids would call with their own, fewer pixels: an explicit count
+ *                     does that), and reads back as -1 from
  *                     asp_solver_get_option and as "auto" from asp_solver_get_option_string
  *                     (a number reads back only from the former). An explicit count the grid
  *                     cannot take (an odd size on the way, or a side below 8 pixels) is
