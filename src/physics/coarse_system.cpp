@@ -26,10 +26,10 @@ std::string coarsening_obstacle(const Grid &grid, std::int64_t smallest) {
 
 namespace {
 
-// The entry of `from`'s half spectrum (in `spectrum`) at to's entry (kx, signed ky), or 0
-// where the mode is not kept: both grids hold it strictly below the smaller one's Nyquist
-// wavevector per axis (2|k| < n: on a 1D grid, ny = 1, that leaves ky = 0 only). `at(kx,
-// ky)` reads from's stored entry at kx and row or column index ky in [0, from.ny).
+// The entry of `from`'s half spectrum at the mode (kx, signed ky) of `to`'s, or 0 where the
+// mode is not kept: both grids hold it strictly below the smaller one's Nyquist wavevector
+// per axis (2|k| < n: on a 1D grid, ny = 1, that leaves ky = 0 only). `at(kx, ky)` reads
+// from's stored entry at kx and row or column index ky in [0, from.ny).
 template <class At>
 Complex kept_mode(const Grid &from, const Grid &to, std::int64_t kx, std::int64_t signed_ky,
                   At &&at) {
