@@ -116,7 +116,7 @@ struct CallTimes {
 // per iteration after the first.
 double solve_fixed(asp::Solver &solver, asp::System &system, asp::Control control, double value,
                    int iterations) {
-  solver.set_option("levels", 0.0);  // the grid's own iterations (pk's default nests grids)
+  solver.set_option("levels", 0.0);  // the grid's own iterations (the default nests grids)
   solver.set_option("tolerance", 1e-300);
   solver.set_option("stall_window", 0.0);
   solver.set_option("max_iterations", static_cast<double>(iterations));

@@ -20,7 +20,8 @@
 // usage: asperity_challenge [--size N] [--threads T] [--algorithm NAME[:VARIABLE]]
 //                           [--penetration D | --mean-gap G] [--tolerance T]
 //                           [--max-iterations K] [--no-pair] [--estimate]
-//                           [--option NAME=VALUE]   (a choice option of the algorithm)
+//                           [--option NAME=VALUE]   (an option of the algorithm: a number,
+//                                                    or else a word; repeatable)
 //        (defaults: 16384, the library's default threads, bugnicourt:gap, 1.5e-6 m, 1e-6,
 //         100000, measured FFT plans (--estimate: FFTW_ESTIMATE, which saves the planning,
 //         about 40 s at 16384^2, for a pair 1.6 times slower there))
@@ -119,7 +120,7 @@ int run(const Options &o) {
 
   asp::Solver solver(o.algorithm);
   if (!o.variable.empty()) solver.set_option("variable", o.variable);
-  for (const auto &choice : o.choices) solver.set_option(choice.first, choice.second);
+  for (const auto &choice : o.choices) bench::set_option(solver, choice.first, choice.second);
   solver.set_option("tolerance", o.tolerance);
   solver.set_option("max_iterations", o.max_iterations);
   Progress progress;

@@ -792,8 +792,8 @@ ASP_EXPORT int asp_solver_describe(const asp_solver *solver, char *buffer, int64
  *                     many iterations have passed since the error last fell below 0.99
  *                     times the error of the iteration at which it last did so (the
  *                     starting point at first); 0: never stall;
- *   "levels"          integer in [0, 16], or the string "auto"; default 0 ("auto" for
- *                     "pk"): nested grids (cascadic coarse-to-fine). A solve whose system state carries no
+ *   "levels"          integer in [0, 16], or the string "auto"; default "auto" for "pk",
+ *                     "bugnicourt" and "lbfgsb", 0 for the others: nested grids (cascadic coarse-to-fine). A solve whose system state carries no
  *                     pressure (a new system, after asp_system_reset or a new
  *                     topography) first solves the same scene on this many grids coarser
  *                     by 2 per axis (same box, substrate, K~(0) and interaction; the heights'

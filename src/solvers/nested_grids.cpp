@@ -108,9 +108,12 @@ void cascade(const AlgorithmSpec &algorithm, const OptionValues &options, System
   // A breakdown leaves the coarse state reset, and a coarse grid that separated under a
   // tensile load leaves surfaces apart: nothing to start from (the finer grid then starts
   // cold, touching at its highest point, and finds its own stable state or its own
-  // separation).
+  // separation). So does a coarse state without pressure, the surfaces apart (a penetration
+  // short of the highest point): prolonged, it would hold an adhesive finer grid apart, a
+  // stable state of higher energy than the contact that a cold start, touching, grows.
   const Termination ended = monitor.termination();
-  if (ended != Termination::breakdown && ended != Termination::separated) {
+  if (ended != Termination::breakdown && ended != Termination::separated &&
+      carries_pressure(*coarse)) {
     prolong_state(*coarse, fine);
     if (depth == 0) work.prolonged = true;
   }

@@ -3,7 +3,8 @@
 // problem is solved on grids coarser by 2, 4, ... per axis (physics/coarse_system.hpp), from
 // the coarsest up, each from the prolonged solution of the one below it and to a looser
 // tolerance, and the solve on the system's own grid starts from the prolonged solution of the
-// finest of them. The option "levels" says how many coarser grids (0: none, the default).
+// finest of them. The option "levels" says how many coarser grids (0: none; "auto", the
+// default of the constrained solvers: as many as leave both sides at least 64 pixels).
 #pragma once
 
 #include <cstdint>

@@ -23,8 +23,13 @@ int main(void) {
   double value = 0.0, peak = 0.0, difference = 0.0, plain_fraction = 0.0, nested_fraction = 0.0;
   int converged = 0, i;
 
-  /* pk nests grids by default ("auto", read as -1); the other solvers do not. */
-  CHECK_OK(asp_solver_create("bugnicourt", &solver));
+  /* The constrained solvers nest grids by default ("auto", read as -1); the solvers of soft
+     walls do not. */
+  CHECK_OK(asp_solver_create("lbfgsb", &solver));
+  CHECK_OK(asp_solver_get_option(solver, "levels", &value));
+  CHECK(value == -1.0);
+  asp_solver_destroy(solver);
+  CHECK_OK(asp_solver_create("lbfgs", &solver));
   CHECK_OK(asp_solver_get_option(solver, "levels", &value));
   CHECK(value == 0.0);
   asp_solver_destroy(solver);

@@ -263,9 +263,11 @@ class SolverApi(unittest.TestCase):
         self.assertEqual(solver.name, "lbfgsb")
         self.assertEqual(solver.get_option("variable"), "gap")
         self.assertEqual(solver.get_option("memory"), 7.0)
-        self.assertEqual(solver.get_option("levels"), 0.0)
-        # pk nests grids by default: its "levels" holds the word "auto", read back as such.
+        # The constrained solvers nest grids by default: "levels" holds the word "auto", read
+        # back as such; the solvers of soft walls do not.
+        self.assertEqual(solver.get_option("levels"), "auto")
         self.assertEqual(asperity.Solver("pk").get_option("levels"), "auto")
+        self.assertEqual(asperity.Solver("lbfgs").get_option("levels"), 0.0)
         self.assertEqual(asperity.Solver("pk", levels=2).get_option("levels"), 2.0)
         solver.tolerance = 1e-9
         self.assertEqual(solver.tolerance, 1e-9)

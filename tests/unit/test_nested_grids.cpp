@@ -264,6 +264,39 @@ TEST(NestedGrids, AdhesiveRoughScenesReachThePlainStateOrALowerEnergy) {
   std::printf("%d of 8 the same state, %d of lower energy\n", same, lower);
 }
 
+// Surfaces held apart (a penetration short of the highest point) on Johnson's adhesive
+// sinusoid in the JKR limit (test_adhesion.cpp): the non-adhesive coarse levels find no
+// contact, and their state, prolonged, held the adhesive grid apart (converged, no pixel on
+// the wall), where the cold solve, touching at the crest, is pulled into the JKR contact of
+// lower energy. A coarse state without pressure is now no start, and the nested solve
+// reaches the cold solve's state: the same contact and pressures within 1e-6 of the peak
+// (the tolerance 1e-10 through the adhesive operator).
+TEST(NestedGrids, SurfacesHeldApartStartCold) {
+  const std::int64_t n = 512;
+  const double l = 1.0, h0 = 0.01, alpha = 0.2;
+  const double w = alpha * alpha * pi * pi * h0 * h0 / (2 * l);
+  const double rho = std::sqrt(2.0 * (l / n) * w);
+  auto grid = asp_test::grid_1d(n, l);
+  std::vector<double> h(static_cast<std::size_t>(n));
+  asp::sinusoid_topography(*grid, h0, 1, 0, h.data());
+  for (const char *algorithm : {"bugnicourt", "lbfgsb"}) {
+    for (double delta : {-0.3 * h0, -0.1 * h0}) {
+      const Outcome plain = solve_scene(grid, h, asp::SubstrateKind::periodic, w, rho,
+                                        algorithm, "gap", Control::penetration, delta, 0, 1e-10);
+      const Outcome nested =
+          solve_scene(grid, h, asp::SubstrateKind::periodic, w, rho, algorithm, "gap",
+                      Control::penetration, delta, asp::levels_auto, 1e-10);
+      ASSERT_TRUE(plain.report.converged()) << algorithm << " " << delta;
+      ASSERT_TRUE(nested.report.converged()) << algorithm << " " << delta;
+      ASSERT_GT(plain.contact, 0.04) << algorithm << " " << delta;
+      EXPECT_EQ(nested.contact, plain.contact) << algorithm << " " << delta;
+      EXPECT_LT(asp_test::max_abs_difference(plain.pressure, nested.pressure),
+                1e-6 * asp_test::max_abs(plain.pressure))
+          << algorithm << " " << delta;
+    }
+  }
+}
+
 // A soft wall (no hard wall: the prolonged gap is the pressure's own, unclipped) with the
 // unconstrained solvers, under penetration control and, for lbfgs_fourier, load control.
 TEST(NestedGrids, SoftWallNestedEqualsPlain) {
@@ -347,6 +380,7 @@ TEST(NestedGrids, ALayerKeepsItsLawOnTheCoarseLevels) {
   auto plain = layer(), nested = layer();
   asp::Solver solver("bugnicourt");
   solver.set_option("tolerance", 1e-10);
+  solver.set_option("levels", 0.0);
   solver.solve(*plain, Control::mean_pressure, 0.01);
   ASSERT_TRUE(solver.report().converged());
   const std::int64_t plain_iterations = solver.report().iterations;
@@ -436,8 +470,12 @@ TEST(NestedGrids, LevelsTheGridCannotTakeAreRefusedNamingTheOption) {
 }
 
 TEST(NestedGrids, LevelsTakeACountOrAutoAndReadBack) {
+  // The constrained solvers nest grids by default; the solvers of soft walls do not.
+  for (const char *algorithm : {"pk", "bugnicourt", "lbfgsb"})
+    EXPECT_EQ(asp::Solver(algorithm).option_text("levels"), "auto") << algorithm;
+  for (const char *algorithm : {"lbfgs", "lbfgs_fourier", "fire", "fire_mass_weighted", "gfmd"})
+    EXPECT_EQ(asp::Solver(algorithm).option("levels"), 0.0) << algorithm;
   asp::Solver solver("bugnicourt");
-  EXPECT_EQ(solver.option("levels"), 0.0);
   solver.set_option("levels", 3.0);
   EXPECT_EQ(solver.option("levels"), 3.0);
   solver.set_option("levels", std::string("auto"));
