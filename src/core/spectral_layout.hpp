@@ -121,7 +121,32 @@ class SpectralLayout {
     }
   }
 
+  // visit(k, kx, ky) for every stored entry k, in storage order, with its integer wavevector
+  // (periods over the box): kx in [0, nx/2], ky signed, in (-ny/2, ny/2].
+  template <class Visit>
+  void for_each_wavevector(Visit &&visit) const {
+    for (std::int64_t local = 0; local < lines_; ++local) {
+      const std::int64_t line = first_line_ + local, start = line_length_ * local;
+      for (std::int64_t k = 0; k < line_length_; ++k) {
+        const bool by_columns = packing_ == Packing::transposed_half_spectrum;
+        visit(start + k, by_columns ? line : k, signed_frequency(by_columns ? k : line, ny_));
+      }
+    }
+  }
+
+  // The stored entry of the integer wavevector (kx, ky) (ky signed, as above), whose line
+  // (its ky by rows, its kx by columns) this layout holds.
+  std::int64_t entry(std::int64_t kx, std::int64_t ky) const {
+    const std::int64_t row = ky < 0 ? ky + ny_ : ky;
+    return packing_ == Packing::transposed_half_spectrum ? (kx - first_line_) * ny_ + row
+                                                          : (row - first_line_) * line_length_ + kx;
+  }
+
  private:
+  // The signed frequency of index k of an axis of n points stored in full.
+  static std::int64_t signed_frequency(std::int64_t k, std::int64_t n) {
+    return 2 * k <= n ? k : k - n;
+  }
   // Frequency (number of periods over the box) carried by index k of an axis of n points
   // stored in full (y of the row packings): k up to n/2, n - k above.
   static std::int64_t axis_frequency(std::int64_t k, std::int64_t n) {

@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "core/loops.hpp"
+#include "core/spectral_layout.hpp"
 #include "physics/periodic_halfspace.hpp"
 
 namespace asp {
@@ -24,61 +25,40 @@ std::string coarsening_obstacle(const Grid &grid, std::int64_t smallest) {
   return "";
 }
 
-namespace {
-
-// The entry of `from`'s half spectrum at the mode (kx, signed ky) of `to`'s, or 0 where the
-// mode is not kept: both grids hold it strictly below the smaller one's Nyquist wavevector
-// per axis (2|k| < n: on a 1D grid, ny = 1, that leaves ky = 0 only). `at(kx, ky)` reads
-// from's stored entry at kx and row or column index ky in [0, from.ny).
-template <class At>
-Complex kept_mode(const Grid &from, const Grid &to, std::int64_t kx, std::int64_t signed_ky,
-                  At &&at) {
-  const std::int64_t sx = std::min(from.nx(), to.nx()), sy = std::min(from.ny(), to.ny());
-  if (2 * kx >= sx || 2 * std::llabs(signed_ky) >= sy) return Complex(0.0, 0.0);
-  return at(kx, signed_ky < 0 ? signed_ky + from.ny() : signed_ky);
-}
-
-std::int64_t signed_wavenumber(std::int64_t k, std::int64_t n) { return 2 * k <= n ? k : k - n; }
-
-}  // namespace
-
 void resample_field(const Grid &from, const Grid &to, const double *in, double *out) {
   Field source = from.make_field();
   std::copy(in, in + from.local_pixels(), source.begin());
   Spectrum a = from.make_spectrum();
   from.fft().forward(source.data(), a.data());
+  // Where from's entries are: all of them here on a serial grid. On a distributed one both
+  // spectra are stored by columns kx, each process holding a slab of them, and this process's
+  // columns of `to` need the same columns of `from`, which other processes may hold (those
+  // beyond from's last column, nx/2, are not kept).
+  SpectralLayout held = from.half_spectrum();
+  const Complex *sa = a.data();
+  Spectrum gathered;
+  if (from.partition() != nullptr) {
+    const std::int64_t first = to.column_offset();
+    const std::int64_t columns = std::max<std::int64_t>(
+        0, std::min(first + to.spectral_columns(), from.nx() / 2 + 1) - first);
+    gathered = Spectrum(static_cast<std::size_t>(columns * from.ny()));
+    from.gather_spectral_columns(a.data(), columns > 0 ? first : 0, columns, gathered.data());
+    held = SpectralLayout(Packing::transposed_half_spectrum, from.nx(), from.ny(), from.lx(),
+                          from.ly(), columns, first);
+    sa = gathered.data();
+  }
   Spectrum b = to.make_spectrum();
   Complex *sb = b.data();
-  // Both transforms are unnormalised: backward(forward(f)) = N_from f on `from`, and the
-  // same coefficients transformed back on `to` make N_from times the resampled field.
+  // The modes both grids hold, strictly below the smaller one's Nyquist wavevector per axis
+  // (2|k| < n: on a 1D grid, ny = 1, that leaves ky = 0 only). Both transforms are
+  // unnormalised: backward(forward(f)) = N_from f on `from`, and the same coefficients
+  // transformed back on `to` make N_from times the resampled field.
+  const std::int64_t sx = std::min(from.nx(), to.nx()), sy = std::min(from.ny(), to.ny());
   const double scale = 1.0 / static_cast<double>(from.n_pixels());
-  if (to.partition() == nullptr) {
-    // Serial: both spectra by rows, S[kx + (nx/2+1) ky], all of them here.
-    const std::int64_t to_row = to.nx() / 2 + 1, from_row = from.nx() / 2 + 1;
-    const Complex *sa = a.data();
-    const auto at = [&](std::int64_t kx, std::int64_t ky) { return sa[kx + from_row * ky]; };
-    loops::for_each(to.local_spectral(), [&](std::int64_t q) {
-      const std::int64_t kx = q % to_row, ky = signed_wavenumber(q / to_row, to.ny());
-      sb[q] = scale * kept_mode(from, to, kx, ky, at);
-    });
-  } else {
-    // Distributed: both spectra by columns kx, S[ky + ny kx], each process holding a slab of
-    // columns; this one's columns of `to` need the same columns of `from`, which other
-    // processes may hold (those beyond from's last column, nx/2, are not kept).
-    const std::int64_t first = to.column_offset(), columns = to.spectral_columns();
-    const std::int64_t held = std::max<std::int64_t>(
-        0, std::min(first + columns, from.nx() / 2 + 1) - first);
-    Spectrum needed(static_cast<std::size_t>(held * from.ny()));
-    from.gather_spectral_columns(a.data(), held > 0 ? first : 0, held, needed.data());
-    const Complex *sa = needed.data();
-    const auto at = [&](std::int64_t kx, std::int64_t ky) {
-      return sa[ky + from.ny() * (kx - first)];
-    };
-    loops::for_each(to.local_spectral(), [&](std::int64_t q) {
-      const std::int64_t kx = first + q / to.ny(), ky = signed_wavenumber(q % to.ny(), to.ny());
-      sb[q] = scale * kept_mode(from, to, kx, ky, at);
-    });
-  }
+  to.half_spectrum().for_each_wavevector([&](std::int64_t k, std::int64_t kx, std::int64_t ky) {
+    const bool kept = 2 * kx < sx && 2 * std::llabs(ky) < sy;
+    sb[k] = kept ? scale * sa[held.entry(kx, ky)] : Complex(0.0, 0.0);
+  });
   Field target = to.make_field();
   to.fft().backward(b.data(), target.data());
   std::copy(target.begin(), target.end(), out);

@@ -25,9 +25,10 @@ constexpr std::int64_t smallest_side = 8;
 // cannot be halved that often (an odd size, or a side below smallest_side); auto: as many
 // halvings as leave both sides at least auto_smallest_side, none on a grid of odd size or
 // with a user's potential (the coarse grids would call it with their own pixels). A
-// distributed grid's coarse grids are distributed over the same processes. A solve whose state carries no pressure (a fresh
-// system, after a reset or a new topography) starts the cascade; one from a state with
-// pressure warm-starts from it on its own grid, as without levels (see solve_coarse_levels).
+// distributed grid's coarse grids are distributed over the same processes. A solve whose
+// state carries no pressure (a fresh system, after a reset or a new topography) starts the
+// cascade; one from a state with pressure warm-starts from it on its own grid, as without
+// levels (see solve_coarse_levels).
 std::int64_t nested_levels(const System &system, double levels);
 
 // The coarse levels' work, for the report: their iterations, and their transforms weighted

@@ -7,9 +7,11 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/spectral_layout.hpp"
 #include "physics/coarse_system.hpp"
 #include "physics/stiffness_law.hpp"
 #include "scene.hpp"
@@ -57,6 +59,34 @@ Outcome solve_scene(const std::shared_ptr<asp::Grid> &grid, const std::vector<do
 }
 
 // ---- restriction and prolongation ----------------------------------------------------------
+
+// The integer wavevectors that restriction reads spectra by: every stored entry visited once,
+// in storage order, with kx in [0, nx/2] and ky signed in (-ny/2, ny/2], and entry() its
+// inverse; by rows (a serial grid's spectrum) and by a slab of columns (a distributed one's),
+// on odd and even sizes.
+TEST(NestedGrids, SpectralLayoutWavevectorsAndEntriesAgree) {
+  for (const auto &shape : {std::pair<std::int64_t, std::int64_t>{7, 6}, {8, 5}}) {
+    const std::int64_t nx = shape.first, ny = shape.second, half = nx / 2 + 1;
+    const asp::SpectralLayout rows(asp::Packing::half_spectrum, nx, ny, 1.0, 1.0);
+    const asp::SpectralLayout slab(asp::Packing::transposed_half_spectrum, nx, ny, 1.0, 1.0, 2,
+                                   1);
+    for (const asp::SpectralLayout *layout : {&rows, &slab}) {
+      const bool by_columns = layout == &slab;
+      std::int64_t expected = 0;
+      layout->for_each_wavevector([&](std::int64_t k, std::int64_t kx, std::int64_t ky) {
+        EXPECT_EQ(k, expected);
+        // The entry's own indices: by rows k = kx + half * row; by columns of the slab from
+        // column 1, k = row + ny * (kx - 1).
+        const std::int64_t row = by_columns ? k % ny : k / half;
+        EXPECT_EQ(kx, by_columns ? 1 + k / ny : k % half);
+        EXPECT_EQ(ky, 2 * row <= ny ? row : row - ny);
+        EXPECT_EQ(layout->entry(kx, ky), k);
+        ++expected;
+      });
+      EXPECT_EQ(expected, layout->size());
+    }
+  }
+}
 
 // A surface whose spectrum lies below the coarse grid's Nyquist wavevector restricts exactly:
 // coarse pixel (i, j) holds the fine height at (2i, 2j), to rounding (1e-15 of the heights,
