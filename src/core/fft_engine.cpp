@@ -10,6 +10,7 @@
 #include <system_error>
 
 #include "core/error.hpp"
+#include "core/transform_clock.hpp"
 #include "core/fft_planner.hpp"
 
 namespace asp {
@@ -67,12 +68,14 @@ RealFft::~RealFft() {
 }
 
 void RealFft::forward(const double *real, Complex *spectrum) const {
+  const transform_clock::Scope timed;
   // FFTW's r2c does not write its input when out of place; the cast only satisfies its API.
   fftw_execute_dft_r2c(static_cast<fftw_plan>(r2c_), const_cast<double *>(real),
                        reinterpret_cast<fftw_complex *>(spectrum));
 }
 
 void RealFft::backward(Complex *spectrum, double *real) const {
+  const transform_clock::Scope timed;
   fftw_execute_dft_c2r(static_cast<fftw_plan>(c2r_), reinterpret_cast<fftw_complex *>(spectrum),
                        real);
 }
@@ -131,6 +134,7 @@ PaddedRealFft::~PaddedRealFft() {
 }
 
 void PaddedRealFft::forward(const double *box, Complex *spectrum, double *rows) const {
+  const transform_clock::Scope timed;
   const std::int64_t width = 2 * nx_, columns = nx_ + 1;
   // The box's rows, each followed by nx zeros.
   for (std::int64_t j = 0; j < ny_; ++j) {
@@ -145,6 +149,7 @@ void PaddedRealFft::forward(const double *box, Complex *spectrum, double *rows) 
 }
 
 void PaddedRealFft::backward(Complex *spectrum, double *box, double *rows) const {
+  const transform_clock::Scope timed;
   const std::int64_t width = 2 * nx_;
   auto *s = reinterpret_cast<fftw_complex *>(spectrum);
   fftw_execute_dft(static_cast<fftw_plan>(columns_backward_), s, s);
@@ -155,6 +160,7 @@ void PaddedRealFft::backward(Complex *spectrum, double *box, double *rows) const
 }
 
 void PaddedRealFft::surface_forward(const double *surface, Complex *spectrum) const {
+  const transform_clock::Scope timed;
   // All 2ny rows along x: the plan's ny rows twice (at offsets that keep the alignment it was
   // made for), then the columns.
   const std::int64_t width = 2 * nx_, columns = nx_ + 1;
@@ -166,6 +172,7 @@ void PaddedRealFft::surface_forward(const double *surface, Complex *spectrum) co
 }
 
 void PaddedRealFft::surface_backward(Complex *spectrum, double *surface) const {
+  const transform_clock::Scope timed;
   const std::int64_t width = 2 * nx_, columns = nx_ + 1;
   auto *s = reinterpret_cast<fftw_complex *>(spectrum);
   fftw_execute_dft(static_cast<fftw_plan>(columns_backward_), s, s);

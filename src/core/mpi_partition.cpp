@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/fft_planner.hpp"
+#include "core/transform_clock.hpp"
 
 namespace asp {
 namespace {
@@ -82,6 +83,7 @@ class MpiRealFft final : public RealTransform {
   }
 
   void forward(const double *real, Complex *spectrum) const override {
+    const transform_clock::Scope timed;
     const std::int64_t padded = 2 * (nx_ / 2 + 1);
     auto *r = reinterpret_cast<double *>(buffer_.data());
     for (std::int64_t j = 0; j < rows_; ++j)
@@ -91,6 +93,7 @@ class MpiRealFft final : public RealTransform {
   }
 
   void backward(Complex *spectrum, double *real) const override {
+    const transform_clock::Scope timed;
     const std::int64_t padded = 2 * (nx_ / 2 + 1);
     std::copy(spectrum, spectrum + spectral_, buffer_.begin());
     fftw_execute(c2r_);
@@ -180,6 +183,7 @@ class MpiPaddedFft final : public PaddedTransform {
   }
 
   void forward(const double *box, Complex *spectrum, double *rows) const override {
+    const transform_clock::Scope timed;
     const std::int64_t width = 2 * nx_;
     for (std::int64_t j = 0; j < rows_; ++j) {
       std::copy(box + nx_ * j, box + nx_ * (j + 1), rows + width * j);
@@ -191,6 +195,7 @@ class MpiPaddedFft final : public PaddedTransform {
   }
 
   void backward(Complex *spectrum, double *box, double *rows) const override {
+    const transform_clock::Scope timed;
     const std::int64_t width = 2 * nx_;
     columns_along_y(spectrum, columns_backward_);
     to_rows(spectrum, 1);
@@ -200,12 +205,14 @@ class MpiPaddedFft final : public PaddedTransform {
   }
 
   void surface_forward(const double *surface, Complex *spectrum) const override {
+    const transform_clock::Scope timed;
     rows_along_x(surface, 2);
     to_columns(spectrum, 2);
     columns_along_y(spectrum, columns_forward_);
   }
 
   void surface_backward(Complex *spectrum, double *surface) const override {
+    const transform_clock::Scope timed;
     columns_along_y(spectrum, columns_backward_);
     to_rows(spectrum, 2);
     rows_back_along_x(surface, 2);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/random.hpp"
+#include "core/transform_clock.hpp"
 #include "scene.hpp"
 
 namespace {
@@ -114,6 +115,37 @@ TEST(Fft, PaddedTransformIsTheFullTransformOfTheZeroPaddedField) {
         EXPECT_NEAR(back[i] / (4.0 * nx * ny), box[i], 1e-13) << i;
       }
   }
+}
+
+// The benchmarks' clock of the transforms: off, a transform adds nothing; on, every
+// transform of a grid, serial or padded, adds its time, and a reset starts again from zero.
+TEST(TransformClock, TimesTransformsOnlyWhileOn) {
+  auto grid = asp::Grid::create(2, 64, 64, 1.0, 1.0);
+  asp::Field f = grid->make_field(), rows = grid->make_field();
+  asp::Spectrum spectrum = grid->make_spectrum();
+  const auto pair = [&]() {
+    grid->fft().forward(f.data(), spectrum.data());
+    grid->fft().backward(spectrum.data(), f.data());
+  };
+  pair();  // plans made before the clock runs
+  asp::transform_clock::reset();
+  asp::transform_clock::enable(false);
+  pair();
+  EXPECT_EQ(asp::transform_clock::seconds(), 0.0);
+
+  asp::transform_clock::enable(true);
+  pair();
+  const double after_pair = asp::transform_clock::seconds();
+  EXPECT_GT(after_pair, 0.0);
+  auto box_grid = asp::Grid::create(2, 32, 32, 1.0, 1.0);
+  asp::Spectrum padded = grid->make_spectrum();
+  asp::Field box = box_grid->make_field();
+  box_grid->padded_fft().forward(box.data(), padded.data(), rows.data());
+  EXPECT_GT(asp::transform_clock::seconds(), after_pair);
+
+  asp::transform_clock::enable(false);
+  asp::transform_clock::reset();
+  EXPECT_EQ(asp::transform_clock::seconds(), 0.0);
 }
 
 }  // namespace
