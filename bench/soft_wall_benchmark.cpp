@@ -25,7 +25,16 @@
 // evaluation in FFT pairs (the pair of the grid timed in the same run), how the solve ended,
 // the contact fraction, the energy's relative difference from the lowest energy any solver
 // reached, the iterations to relative energy errors of 1e-5 and 1e-10 (from the recorded
-// history; '-' if never), and the solver's memory per pixel.
+// history; '-' if never), and the solver's memory per pixel. Last, where an iteration's time
+// goes, as asperity_pk_benchmark splits it: its transforms in FFT pairs (`FFTs/it`), what a
+// pair cost inside the solve in reference pairs (`in solve`: the library's transforms timed
+// where they run, core/transform_clock.hpp), and the rest of the iteration's time in field
+// streams (`streams`: 8 bytes per pixel read or written, bench::field_stream_seconds), less
+// the wall's potential at its own price for every evaluation (`wall`, in reference pairs: one
+// evaluation of the potential over the grid, its exponentials with the gap read and phi and
+// phi' written). The history is recorded, so the rest includes its passes (the objective and
+// the contact area of every iteration). The reference pair, the stream and the potential are
+// timed before every solve, and the best of those timings is the price.
 //
 // usage: asperity_soft_wall_benchmark [--scene table4|table4-long|rough] [--size N]
 //                                     [--tolerance T] [--penetration D]
@@ -35,6 +44,7 @@
 //        (defaults: table4; size 1024 (table4) or 512 (rough); tolerance 1e-10 for 1D, 1e-8
 //         for 2D; the five unconstrained solvers)
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -46,6 +56,9 @@
 
 #include "bench/bench_common.hpp"
 #include "core/error.hpp"
+#include "core/transform_clock.hpp"
+#include "physics/interaction.hpp"
+#include "physics/potential.hpp"
 #include "physics/surface_statistics.hpp"
 #include "physics/system.hpp"
 #include "physics/topography.hpp"
@@ -71,6 +84,7 @@ struct Run {
   double energy = 0.0;
   double contact = 0.0;
   double bytes_per_pixel = 0.0;
+  double transform_seconds = 0.0;  // in the library's transforms
 };
 
 // The energy a solve minimises in physical units under penetration control.
@@ -88,10 +102,32 @@ long long iterations_to(const asp::History &history, double reference, double re
   return -1;
 }
 
+// The time of one evaluation of the system's potential over its grid, best of five.
+double potential_seconds(const asp::System &system) {
+  const asp::PotentialInteraction *wall = asp::potential_interaction(system.interaction());
+  if (wall == nullptr) return 0.0;
+  const std::int64_t n = system.grid().n_pixels();
+  asp::Field gap(static_cast<std::size_t>(n)), phi(gap.size()), dphi(gap.size());
+  const double range = wall->potential().length_scale();
+  for (std::int64_t i = 0; i < n; ++i)
+    gap[static_cast<std::size_t>(i)] = range * static_cast<double>(i % 97) / 8.0;
+  double best = 1e300;
+  for (int k = 0; k < 5; ++k) {
+    const auto start = std::chrono::steady_clock::now();
+    wall->potential().evaluate(n, gap.data(), phi.data(), dphi.data(), nullptr);
+    best = std::min(best, bench::seconds_since(start));
+  }
+  return best;
+}
+
 void compare(asp::System &system, double penetration, const Options &o, double tolerance,
              double fft_pair) {
   std::vector<Run> runs;
-  const std::int64_t pixels = system.grid().n_pixels();
+  const asp::Grid &grid = system.grid();
+  const std::int64_t pixels = grid.n_pixels();
+  double stream = bench::field_stream_seconds(grid);
+  double wall = potential_seconds(system);
+  asp::transform_clock::enable(true);
   for (const std::string &name : o.solvers) {
     Run run;
     run.solver = name;
@@ -109,9 +145,14 @@ void compare(asp::System &system, double penetration, const Options &o, double t
       solver.set_option("stall_window", 20000.0);
       solver.set_history(true);
       system.reset_state();
+      fft_pair = std::min(fft_pair, bench::fft_pair_seconds(grid));
+      stream = std::min(stream, bench::field_stream_seconds(grid));
+      wall = std::min(wall, potential_seconds(system));
       const std::int64_t before = asp::field_bytes_in_use();
       asp::reset_field_bytes_peak();
+      asp::transform_clock::reset();
       solver.solve(system, asp::Control::penetration, penetration);
+      run.transform_seconds = asp::transform_clock::seconds();
       run.bytes_per_pixel = static_cast<double>(asp::field_bytes_peak() - before) / pixels;
       run.report = solver.report();
       run.history = solver.history();
@@ -132,9 +173,13 @@ void compare(asp::System &system, double penetration, const Options &o, double t
     for (const auto &row : run.history) reference = std::min(reference, row[objective]);
   }
   std::printf("lowest energy reached: %.15g\n", reference);
-  std::printf("%-20s %7s %7s %8s %9s %8s %8s %-16s %8s %10s %8s %8s %7s\n", "solver", "iters",
-              "evals", "FFTs", "seconds", "it/pair", "ev/pair", "end", "contact", "dE/E",
-              "to 1e-5", "to 1e-10", "B/px");
+  std::printf("reference FFT pair %.4g ms, field stream %.4g ms, wall's potential %.4g ms (%.2f "
+              "pairs; best of the timings before each solve)\n",
+              1e3 * fft_pair, 1e3 * stream, 1e3 * wall, wall / fft_pair);
+  std::printf("%-20s %7s %7s %8s %9s %8s %8s %-16s %8s %10s %8s %8s %7s %8s %8s %8s\n",
+              "solver", "iters", "evals", "FFTs", "seconds", "it/pair", "ev/pair", "end",
+              "contact", "dE/E", "to 1e-5", "to 1e-10", "B/px", "FFTs/it", "in solve",
+              "streams");
   for (const Run &run : runs) {
     if (!run.ran) continue;
     const asp::SolveReport &r = run.report;
@@ -144,12 +189,19 @@ void compare(asp::System &system, double penetration, const Options &o, double t
     const long long to10 = iterations_to(run.history, reference, 1e-10);
     const std::string at5 = to5 < 0 ? "-" : std::to_string(to5);
     const std::string at10 = to10 < 0 ? "-" : std::to_string(to10);
-    std::printf("%-20s %7lld %7lld %8lld %9.3f %8.2f %8.2f %-16s %8.4f %+10.2e %8s %8s %7.1f\n",
+    const double pairs = 0.5 * static_cast<double>(r.transforms);
+    const double pair_in_solve = pairs > 0.0 ? run.transform_seconds / pairs : 0.0;
+    const double rest =
+        (r.seconds - run.transform_seconds - static_cast<double>(r.evaluations) * wall) /
+        iterations;
+    std::printf("%-20s %7lld %7lld %8lld %9.3f %8.2f %8.2f %-16s %8.4f %+10.2e %8s %8s %7.1f "
+                "%8.2f %8.2f %8.1f\n",
                 run.solver.c_str(), static_cast<long long>(r.iterations),
                 static_cast<long long>(r.evaluations), static_cast<long long>(r.transforms),
                 r.seconds, r.seconds / iterations / fft_pair, r.seconds / evaluations / fft_pair,
                 asp::termination_name(r.termination), run.contact,
-                run.energy / reference - 1.0, at5.c_str(), at10.c_str(), run.bytes_per_pixel);
+                run.energy / reference - 1.0, at5.c_str(), at10.c_str(), run.bytes_per_pixel,
+                pairs / iterations, pair_in_solve / fft_pair, rest / stream);
   }
 }
 
