@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdlib>
 #include <fstream>
 #include <string>
@@ -97,6 +98,13 @@ inline double field_stream_seconds(const asp::Grid &grid) {
     best = std::min(best, seconds_since(start) / repeats / 3.0);
   }
   return best;
+}
+
+// What one transform pair cost inside a solve that made `transforms` transforms, from the
+// seconds the library's transform clock (core/transform_clock.hpp) counted over it; 0 for a
+// solve without transforms.
+inline double pair_in_solve(double transform_seconds, std::int64_t transforms) {
+  return transforms > 0 ? transform_seconds / (0.5 * static_cast<double>(transforms)) : 0.0;
 }
 
 }  // namespace bench

@@ -115,8 +115,8 @@ int main(int argc, char **argv) {
     const double planning = seconds_since(plan_start);
     // The reference pair and the stream are timed again before every solve below, and the
     // best of all those timings taken, as for the solves: on a shared machine one timing of
-    // the same 2048^2 pair can take half as long again as the next (53 to 81 ms within a
-    // minute), and a reference timed once would move the ratios by as much.
+    // the same 2048^2 pair can take half as long again as the next (53 to 81 ms within
+    // seconds), and a reference timed once would move the ratios by as much.
     double fft = fft_pair_seconds(*reference, transform_n, transform_n);
     double stream = bench::field_stream_seconds(*grid);
 
@@ -189,8 +189,7 @@ int main(int argc, char **argv) {
     // of its time in field streams, the element-wise passes' currency.
     const double in_transforms = 0.5 * static_cast<double>(r.transforms) /
                                  static_cast<double>(std::max<std::int64_t>(r.iterations, 1));
-    const double pair_in_solve =
-        r.transforms > 0 ? transform_seconds / (0.5 * static_cast<double>(r.transforms)) : 0.0;
+    const double pair_in_solve = bench::pair_in_solve(transform_seconds, r.transforms);
     const double rest_in_streams = (per_iteration - in_transforms * pair_in_solve) / stream;
     std::printf("%6ld %10.2f %12.3f %12.3f %7.2f %6lld %6.0f %9.3f %7.2f %9.2f %9.4f %8.1f "
                 "%+8.1f%% %8.2f %8.2f %8.3f %8.1f%s\n",

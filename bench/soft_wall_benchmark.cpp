@@ -190,7 +190,7 @@ void compare(asp::System &system, double penetration, const Options &o, double t
     const std::string at5 = to5 < 0 ? "-" : std::to_string(to5);
     const std::string at10 = to10 < 0 ? "-" : std::to_string(to10);
     const double pairs = 0.5 * static_cast<double>(r.transforms);
-    const double pair_in_solve = pairs > 0.0 ? run.transform_seconds / pairs : 0.0;
+    const double pair_in_solve = bench::pair_in_solve(run.transform_seconds, r.transforms);
     const double rest =
         (r.seconds - run.transform_seconds - static_cast<double>(r.evaluations) * wall) /
         iterations;
