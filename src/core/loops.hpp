@@ -171,8 +171,12 @@ std::array<double, K + 1> sums_and_max(const Reductions &reductions, std::int64_
       [&](std::int64_t begin, std::int64_t end, std::array<double, K + 1> &part) {
         double sum[K] = {};
         double max = -std::numeric_limits<double>::infinity();
+        // A copy of the kernel per piece: no store of the loop can reach a local's
+        // captures, so that they stay in registers (through `body` every store to a field
+        // would make them load again).
+        auto kernel = body;
 #pragma omp simd reduction(+ : sum[:K]) reduction(max : max)
-        for (std::int64_t i = begin; i < end; ++i) body(i, sum, max);
+        for (std::int64_t i = begin; i < end; ++i) kernel(i, sum, max);
         for (int k = 0; k < K; ++k) part[k] = sum[k];
         part[K] = none_if_lowest(max);
       },
@@ -186,18 +190,19 @@ std::array<double, K + 1> sums_and_max(const Reductions &reductions, std::int64_
 }
 
 // count sums, with count known only at run time: body(begin, end, sum) adds the terms of the
-// entries [begin, end) to sum[0..count-1]. The entries come in blocks of at most Block, small
-// enough to stay in a cache, so that a body may pass over its block several times (once per
-// stored vector, say) while every array is read from memory once. The default keeps a few
-// arrays' blocks in the first-level cache; a body that sweeps many other arrays once per
-// block wants longer ones, which the prefetchers follow further.
+// entries [begin, end) to sum[0..count-1]. The entries come in blocks of at most `block`,
+// small enough to stay in a cache, so that a body may pass over its block several times
+// (once per stored vector, say) while every array is read from memory once. The default
+// keeps a few arrays' blocks in the first-level cache; a body that sweeps many other arrays
+// once per block wants longer ones (sweep_block below). Blocks longer than chunk_entries are
+// also the chunks, so that the sums depend on n and `block`, not on the thread count.
 constexpr std::int64_t block_entries = 256;
-template <std::int64_t Block = block_entries, class Body>
+template <class Body>
 void block_sums(const Reductions &reductions, std::int64_t n, int count, double *sum,
-                Body &&body) {
-  constexpr std::int64_t block = Block;
-  const std::vector<double> total = reduce_in_parts(
-      n, std::vector<double>(static_cast<std::size_t>(count), 0.0),
+                Body &&body, std::int64_t block = block_entries) {
+  const std::vector<double> total = reduce_in_chunks(
+      n, std::max(chunk_entries, block), threads_for(n),
+      std::vector<double>(static_cast<std::size_t>(count), 0.0),
       [&](std::int64_t begin, std::int64_t end, std::vector<double> &part) {
         for (std::int64_t b = begin; b < end; b += block) body(b, std::min(end, b + block), part.data());
       },
@@ -206,6 +211,16 @@ void block_sums(const Reductions &reductions, std::int64_t n, int count, double 
       });
   std::copy(total.begin(), total.end(), sum);
   reductions.combine_sums(sum, count);
+}
+
+// The block for a body of block_sums that sweeps many arrays once per block, for n entries.
+// Each of those arrays is then read in pieces of `block` entries, one piece after another's
+// of the other arrays: short pieces restart the prefetchers at every one. At 2048^2, ten
+// arrays read in pieces of 2048 entries took 1.5 times as long as read whole one after
+// another, and in pieces of 32768 entries or more no longer. At most n/64 (at least 2048),
+// so that the threads still share the chunks, and a function of n alone.
+inline std::int64_t sweep_block(std::int64_t n) {
+  return std::clamp<std::int64_t>(n / 64, 2048, 65536);
 }
 
 // The entries i in [0, n) with keep(i), in increasing order, appended to out (a container

@@ -77,7 +77,7 @@ bool CompactBfgs::add_pair(const double *x, Field &x_old, const double *g, Field
   // cache, so that each field is read once. The kernel works on its own copies of the
   // pointers: through the captured references GCC vectorises the products as gathers,
   // at twice the instructions.
-  loops::block_sums<2048>(reductions_, n_, own + 5, sums.data(),
+  loops::block_sums(reductions_, n_, own + 5, sums.data(),
                     [&](std::int64_t begin, std::int64_t end, double *sum) {
                       const double *__restrict xn = x;
                       const double *__restrict gn = g;
@@ -121,7 +121,8 @@ bool CompactBfgs::add_pair(const double *x, Field &x_old, const double *g, Field
                         out[4] += e;
                         out[5] += f;
                       }
-                    });
+                    },
+                    loops::sweep_block(n_));
   for (int j = 0; j < k; ++j) {
     sg_[j] = sums[6 * j + 4];
     yg_[j] = sums[6 * j + 5];

@@ -38,6 +38,29 @@ inline bool at_bound(double x, double g, double lower, double t) {
   return g > 0.0 && x - lower <= t * g;
 }
 
+// The bound of unknown i: `lower` on the first `bounded` unknowns, none on the others. A
+// value, so that the kernels hold it in registers.
+struct Bound {
+  std::int64_t bounded;
+  double lower;
+  double operator()(std::int64_t i) const { return i < bounded ? lower : -infinity; }
+};
+
+// An unknown's part of the direction from its x_bar: returns d = max(x_bar, bound) - x, and
+// adds its shares of the sums g.d and d.d and of the maximum of -(step to the bound), whose
+// negative is the largest feasible step. (The division is by d, or by -1 where d does not
+// point to the bound: no lane divides by zero if the compiler evaluates both sides.)
+inline double finish_unknown(double x, double g, double bound, double x_bar, double *sum,
+                             double &max) {
+  const double d = (x_bar > bound ? x_bar : bound) - x;
+  sum[0] += g * d;
+  sum[1] += d * d;
+  const bool towards = d < 0.0;
+  const double limit = towards ? -(bound - x) / (towards ? d : -1.0) : -infinity;
+  max = max > limit ? max : limit;
+  return d;
+}
+
 // Whether a set of about `size` of `total` unknowns (over all processes) is better listed by
 // its complement: the same choice on every process, from global counts.
 bool list_complement(std::int64_t size, std::int64_t total) { return size > total / 2; }
@@ -46,29 +69,35 @@ bool list_complement(std::int64_t size, std::int64_t total) { return size > tota
 // `complement`, by the unknowns outside it: the sums of g_i w_i into a (2k entries) and of
 // w_i w_i^T into gram (2k x 2k), with w_i row i of W. A complement's
 // sums are subtracted from the totals W^T g and W^T W that the compact matrix keeps: so that
-// only the few unknowns in (or out of) contact are visited.
+// only the few unknowns in (or out of) contact are visited. With `kept` (2k entries per
+// listed unknown), the rows gathered stay there (kept_row_entry).
 void sums_over_list(const Indices &list, bool complement, const double *g,
                     const CompactBfgs &bfgs, const Reductions &reductions, double *a,
-                    double *gram) {
+                    double *gram, double *kept) {
   const int k2 = bfgs.columns();
   const std::int64_t listed = static_cast<std::int64_t>(list.size());
   const int count = k2 + k2 * k2;
   std::vector<double> sums(static_cast<std::size_t>(count));
-  // A block of listed unknowns at a time: each column's entries there are gathered in index
-  // order (one sparse sweep per column, which the prefetchers follow, rather than 2k
-  // scattered reads per unknown), and the products are then dot products over the block.
-  constexpr std::int64_t block = loops::block_entries;
+  // A block of listed unknowns at a time: their rows of W are gathered, the rows a few
+  // entries ahead fetched while one is copied (the list's gaps defeat the prefetchers), and
+  // the products are then dot products over the block.
+  constexpr std::int64_t block = kept_row_block;
   loops::block_sums(reductions, listed, count, sums.data(),
                     [&](std::int64_t begin, std::int64_t end, double *sum) {
                       const std::int64_t length = end - begin;
                       const std::int64_t *at = list.data() + begin;
-                      std::vector<double> rows(static_cast<std::size_t>((k2 + 1) * block));
-                      double *gl = rows.data() + static_cast<std::size_t>(k2) * block;
-                      for (std::int64_t p = 0; p < length; ++p) gl[p] = g[at[p]];
-                      for (int j = 0; j < k2; ++j) {
-                        const double *column = bfgs.column(j);
-                        double *wj = rows.data() + static_cast<std::size_t>(j) * block;
-                        for (std::int64_t p = 0; p < length; ++p) wj[p] = column[at[p]];
+                      std::vector<double> scratch(
+                          static_cast<std::size_t>((kept != nullptr ? 1 : k2 + 1) * block));
+                      double *rows = kept != nullptr ? kept + begin * k2 : scratch.data();
+                      double *gl = scratch.data() + (kept != nullptr ? 0 : k2 * block);
+                      // A kept block's columns lie at its own length apart.
+                      const std::int64_t stride = kept != nullptr ? length : block;
+                      constexpr std::int64_t ahead = 8;
+                      for (std::int64_t p = 0; p < length; ++p) {
+                        if (begin + p + ahead < listed) bfgs.prefetch_row(at[p + ahead]);
+                        const std::int64_t i = at[p];
+                        gl[p] = g[i];
+                        for (int j = 0; j < k2; ++j) rows[j * stride + p] = bfgs.column(j)[i];
                       }
                       const auto dot_block = [&](const double *a, const double *b) {
                         double total = 0.0;
@@ -76,9 +105,7 @@ void sums_over_list(const Indices &list, bool complement, const double *g,
                         for (std::int64_t p = 0; p < length; ++p) total += a[p] * b[p];
                         return total;
                       };
-                      const auto row = [&](int j) {
-                        return rows.data() + static_cast<std::size_t>(j) * block;
-                      };
+                      const auto row = [&](int j) { return rows + j * stride; };
                       for (int j = 0; j < k2; ++j) sum[j] += bfgs.scale(j) * dot_block(gl, row(j));
                       for (int r = 0; r < k2; ++r)
                         for (int c = r; c < k2; ++c)
@@ -107,7 +134,7 @@ double dot(const std::vector<double> &a, const std::vector<double> &b) {
 CauchyPoint generalized_cauchy_point(const double *x, const double *g, std::int64_t n,
                                      std::int64_t bounded, double lower,
                                      const CompactBfgs &bfgs, const Reductions &reductions,
-                                     Indices &list, Breakpoints &heap) {
+                                     CauchyWork &work) {
   const auto bound = [&](std::int64_t i) { return i < bounded ? lower : -infinity; };
   const int k2 = bfgs.columns();
   const double theta = bfgs.theta();
@@ -116,39 +143,86 @@ CauchyPoint generalized_cauchy_point(const double *x, const double *g, std::int6
   cauchy.c.assign(size, 0.0);
 
   // The direction d = -g, zero where the bound holds the unknown (t_i = 0); the slope
-  // f' = g.d and p = W^T d.
-  const auto start = loops::sums<2>(reductions, n, [&](std::int64_t i, double *sum) {
-    const bool held = at_bound(x[i], g[i], bound(i), 0.0);
-    sum[0] += held ? 1.0 : 0.0;
-    sum[1] += held ? 0.0 : g[i] * g[i];
-  });
-  const auto held = static_cast<std::int64_t>(start[0]);
+  // f' = g.d and p = W^T d. One pass counts the unknowns the bound holds, sums the slope,
+  // lists the unknowns off the bound (or those on it, if fewer), for the sums over the free
+  // set, and puts the breakpoints t_i = (x_i - lower)/g_i in a heap, smallest first. Which of
+  // the two sets to list is known only after the count: the pass lists the one the last
+  // call listed, and a second pass lists the other if that guess was wrong (or if there was
+  // no last call: a first guess would be wrong half the time, and on a large set). The pass
+  // is serial, as its lists are; its sums, chunk by chunk as the loops' (for their
+  // rounding), do not depend on the thread count. The entries of the lists go first to
+  // small buffers, written without a branch or a call (which would send the sums to memory
+  // at every entry), and from there to the lists.
+  using Listed = CauchyWork::Listed;
+  const Listed guess = work.last_listed;
+  Indices &list = work.list;
+  Breakpoints &heap = work.heap;
+  list.clear();
+  heap.clear();
+  const bool listing_now = k2 > 0 && guess != Listed::none_yet;
+  const bool list_held = guess == Listed::on_bound;
+  constexpr std::int64_t buffered = 512;
+  std::int64_t listed_buffer[buffered];
+  Breakpoint breakpoint_buffer[buffered];
+  double sums[2] = {0.0, 0.0};
+  for (std::int64_t chunk = 0; chunk < n; chunk += loops::chunk_entries) {
+    double held_count = 0.0, slope_sum = 0.0;
+    const std::int64_t chunk_end = std::min(n, chunk + loops::chunk_entries);
+    for (std::int64_t begin = chunk; begin < chunk_end; begin += buffered) {
+      const std::int64_t end = std::min(chunk_end, begin + buffered);
+      std::int64_t listed = 0, broken = 0;
+      double held_here = 0.0, slope_here = 0.0;
+      for (std::int64_t i = begin; i < end; ++i) {
+        const double xi = x[i], gi = g[i], bi = bound(i);
+        const bool held = at_bound(xi, gi, bi, 0.0);
+        held_here += held ? 1.0 : 0.0;
+        slope_here += held ? 0.0 : gi * gi;
+        listed_buffer[listed] = i;
+        listed += listing_now && held == list_held ? 1 : 0;
+        // The breakpoint of an unknown off the bound that g pushes towards it (the division
+        // by 1 elsewhere only keeps every entry's arithmetic harmless).
+        const double breakpoint = (xi - bi) / (gi > 0.0 ? gi : 1.0);
+        breakpoint_buffer[broken] = {breakpoint, i};
+        broken += gi > 0.0 && xi > bi && std::isfinite(breakpoint) ? 1 : 0;
+      }
+      held_count += held_here;
+      slope_sum += slope_here;
+      list.insert(list.end(), listed_buffer, listed_buffer + listed);
+      heap.insert(heap.end(), breakpoint_buffer, breakpoint_buffer + broken);
+    }
+    sums[0] += held_count;
+    sums[1] += slope_sum;
+  }
+  reductions.combine_sums(sums, 2);
+  const auto held = static_cast<std::int64_t>(sums[0]);
   double unknowns = static_cast<double>(n);
   reductions.combine_sums(&unknowns, 1);
   const auto total = static_cast<std::int64_t>(unknowns);
-  double slope = -start[1];
+  double slope = -sums[1];
   cauchy.at_bound = held;
-  // One pass lists the unknowns off the bound (or those on it, if fewer), for the sums over
-  // the free set, and puts the breakpoints t_i = (x_i - lower)/g_i in a heap, smallest
-  // first.
   const bool complement = list_complement(total - held, total);
-  list.clear();
-  heap.clear();
-  for (std::int64_t i = 0; i < n; ++i) {
-    if (k2 > 0 && at_bound(x[i], g[i], bound(i), 0.0) == complement) list.push_back(i);
-    if (g[i] > 0.0 && x[i] > bound(i)) {
-      const double breakpoint = (x[i] - bound(i)) / g[i];
-      if (std::isfinite(breakpoint)) heap.push_back({breakpoint, i});
-    }
+  const Listed listing = complement ? Listed::on_bound : Listed::free;
+  if (k2 > 0 && listing != guess) {
+    list.clear();
+    const auto listed = [&](std::int64_t i) {
+      return at_bound(x[i], g[i], bound(i), 0.0) == complement;
+    };
+    loops::select(n, listed, list);
   }
+  work.last_listed = listing;
   const auto later = [](const Breakpoint &a, const Breakpoint &b) { return a.t > b.t; };
   std::make_heap(heap.begin(), heap.end(), later);
   cauchy.listed_free = k2 > 0 && !complement;
   cauchy.free_gradient.assign(size, 0.0);
   cauchy.free_gram.assign(size * size, 0.0);
+  // The rows gathered at the free unknowns are kept for the subspace minimisation when they
+  // are few (an eighth of the unknowns at most: 2k/8 fields of memory).
+  cauchy.kept_rows = cauchy.listed_free && static_cast<std::int64_t>(list.size()) <= n / 8;
+  Field &rows = work.rows;
+  if (cauchy.kept_rows && rows.size() < list.size() * size) rows = Field(list.size() * size);
   if (k2 > 0)
     sums_over_list(list, complement, g, bfgs, reductions, cauchy.free_gradient.data(),
-                   cauchy.free_gram.data());
+                   cauchy.free_gram.data(), cauchy.kept_rows ? rows.data() : nullptr);
   if (!(slope < 0.0)) return cauchy;  // the path does not move: x is its own Cauchy point
 
   // M p and M c are carried along with p and c, so that a segment needs one product with M.
@@ -249,7 +323,7 @@ class Lbfgsb {
     bool first = true;
     for (std::int64_t iteration = 1;;) {
       const CauchyPoint cauchy = generalized_cauchy_point(x_, g_.data(), n_, bounded_, lower_, bfgs_,
-                                                          reductions_, list_, heap_);
+                                                          reductions_, work_);
       subspace_minimisation(cauchy);
       const Search search = line_search(first);
       if (search == Search::not_finite) {
@@ -328,55 +402,82 @@ class Lbfgsb {
   // finish_direction() forms, in the same pass. Returns whether d is a descent direction
   // (g.d < 0). The model's correction w_i.u is added over the free unknowns only: in the pass
   // if they are many; from the list if they are few, the pass then finishing the unknowns on
-  // the bound and the list the free ones.
+  // the bound and the list the free ones. The kernels read the fields and the bound through
+  // locals: through the members every store to d would make them load again.
   bool project_subspace_step(const CauchyPoint &cauchy, std::int64_t free_count) {
     const int k2 = bfgs_.columns();
     const double inverse_theta = 1.0 / bfgs_.theta(), t = cauchy.t;
     const double *x = x_, *g = g_.data(), *u = u_.data();
     double *d = d_, *x_old = x_old_.data();
-    // The free unknowns, when they are few, from a list: those of the Cauchy point's list
-    // that the path took to the bound leave it (if it listed the free ones; otherwise a pass
-    // finds them).
+    const Bound bound{bounded_, lower_};
+    // The free unknowns, when they are few, from a list. The Cauchy point's, with its kept
+    // rows, serves as it is (the unknowns the path took to the bound are skipped);
+    // otherwise those it took leave it, or a pass lists the free ones.
     const bool listed = k2 > 0 && !list_complement(free_count, total_);
-    if (listed) {
-      const auto fixed = [&](std::int64_t i) { return at_bound(x[i], g[i], bound(i), t); };
+    const auto fixed = [=](std::int64_t i) { return at_bound(x[i], g[i], bound(i), t); };
+    const bool kept = listed && cauchy.kept_rows;
+    Indices &list = work_.list;
+    if (listed && !kept) {
       if (cauchy.listed_free) {
-        list_.erase(std::remove_if(list_.begin(), list_.end(), fixed), list_.end());
+        list.erase(std::remove_if(list.begin(), list.end(), fixed), list.end());
       } else {
-        list_.clear();
-        loops::select(n_, [&](std::int64_t i) { return !fixed(i); }, list_);
+        list.clear();
+        loops::select(n_, [&](std::int64_t i) { return !fixed(i); }, list);
       }
     }
     const CompactBfgs &bfgs = bfgs_;
-    const auto finish = [&](std::int64_t i, double x_bar, double *sum, double &max) {
-      finish_unknown(i, x_bar, sum, max);
+    const auto finish = [=](std::int64_t i, double x_bar, double *sum, double &max) {
+      d[i] = finish_unknown(x[i], g[i], bound(i), x_bar, sum, max);
     };
-    std::array<double, 3> s = loops::sums_and_max<2>(
-        reductions_, n_, [&](std::int64_t i, double *sum, double &max) {
-          x_old[i] = x[i];
-          if (at_bound(x[i], g[i], bound(i), t)) {
-            finish(i, bound(i), sum, max);
-          } else if (listed) {
-            d[i] = x[i] - g[i] * inverse_theta;  // its correction and finish come from the list
-          } else {
-            finish(i, x[i] - g[i] * inverse_theta + (k2 > 0 ? bfgs.row_times(i, u) : 0.0), sum,
-                   max);
-          }
-        });
+    std::array<double, 3> s;
     if (listed) {
-      // Column by column, each read in index order (see sums_over_list).
-      for (int j = 0; j < k2; ++j) {
-        const double *column = bfgs.column(j);
-        const double weight = bfgs.scale(j) * u[j];
-        for (std::int64_t i : list_) d[i] += weight * column[i];
-      }
+      // The unknowns on the bound are finished here; the free ones get x - g/theta, and
+      // their correction and finish from the list.
+      const auto body = [=](std::int64_t i, double *sum, double &max) {
+        x_old[i] = x[i];
+        if (fixed(i))
+          finish(i, bound(i), sum, max);
+        else
+          d[i] = x[i] - g[i] * inverse_theta;
+      };
+      s = loops::sums_and_max<2>(reductions_, n_, body);
+      // One sweep of the list, each unknown's row of W read at once: from the kept copy, or
+      // gathered, the rows a few entries ahead fetched while this one is summed (the list's
+      // gaps defeat the prefetchers).
+      constexpr std::int64_t ahead = 8;
+      const auto listed_count = static_cast<std::int64_t>(list.size());
+      const std::int64_t *at = list.data();
+      std::vector<double> weight(static_cast<std::size_t>(k2));
+      for (int j = 0; j < k2; ++j) weight[j] = bfgs.scale(j) * u[j];
       double sums[2] = {0.0, 0.0}, max = -infinity;
-      for (std::int64_t i : list_) finish(i, d[i], sums, max);
+      for (std::int64_t p = 0; p < listed_count; ++p) {
+        const std::int64_t i = at[p];
+        double correction = 0.0;
+        if (kept) {
+          if (fixed(i)) continue;
+          for (int j = 0; j < k2; ++j)
+            correction += kept_row_entry(work_.rows, k2, listed_count, p, j) * weight[j];
+        } else {
+          if (p + ahead < listed_count) bfgs.prefetch_row(at[p + ahead]);
+          correction = bfgs.row_times(i, u);
+        }
+        finish(i, d[i] + correction, sums, max);
+      }
       reductions_.combine_sums(sums, 2);
       reductions_.combine_maxima(&max, 1);
       s[0] += sums[0];
       s[1] += sums[1];
       s[2] = std::max(s[2], max);
+    } else {
+      const auto body = [=, &bfgs](std::int64_t i, double *sum, double &max) {
+        x_old[i] = x[i];
+        if (fixed(i))
+          finish(i, bound(i), sum, max);
+        else
+          finish(i, x[i] - g[i] * inverse_theta + (k2 > 0 ? bfgs.row_times(i, u) : 0.0), sum,
+                 max);
+      };
+      s = loops::sums_and_max<2>(reductions_, n_, body);
     }
     return take_direction_sums(s);
   }
@@ -411,25 +512,14 @@ class Lbfgsb {
   // From x_bar in d: d <- max(x_bar, lower) - x, x_old <- x, and the slope g.d, |d|^2 and the
   // largest feasible step along d. Returns whether d descends.
   bool finish_direction() {
-    const double *x = x_;
+    const double *x = x_, *g = g_.data();
     double *d = d_, *x_old = x_old_.data();
+    const Bound bound{bounded_, lower_};
     return take_direction_sums(loops::sums_and_max<2>(
-        reductions_, n_, [&](std::int64_t i, double *sum, double &max) {
+        reductions_, n_, [=](std::int64_t i, double *sum, double &max) {
           x_old[i] = x[i];
-          finish_unknown(i, d[i], sum, max);
+          d[i] = finish_unknown(x[i], g[i], bound(i), d[i], sum, max);
         }));
-  }
-
-  // Unknown i's part of the direction from its x_bar: d_i = max(x_bar, lower) - x_i, and its
-  // shares of the sums g.d and d.d and of the maximum of -(step to the bound), whose
-  // negative is the largest feasible step.
-  void finish_unknown(std::int64_t i, double x_bar, double *sum, double &max) const {
-    const double di = (x_bar > bound(i) ? x_bar : bound(i)) - x_[i];
-    d_[i] = di;
-    sum[0] += g_[i] * di;
-    sum[1] += di * di;
-    const double limit = di < 0.0 ? -(bound(i) - x_[i]) / di : -infinity;
-    max = max > limit ? max : limit;
   }
 
   // The slope g.d, |d| and the largest feasible step from the sums g.d, d.d and the maximum
@@ -498,8 +588,7 @@ class Lbfgsb {
   CompactBfgs bfgs_;
   std::vector<double> u_;
   double slope_ = 0.0, direction_norm_ = 0.0, largest_step_ = 0.0;
-  Indices list_;
-  Breakpoints heap_;
+  CauchyWork work_;  // the Cauchy point's, whose list and rows the step reads
 };
 
 bool on_the_gap(const OptionValues &options) { return options.text("variable") == "gap"; }

@@ -9,6 +9,7 @@
 // hard wall under penetration control.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -40,9 +41,13 @@ struct CauchyPoint {
   // g_i w_i (2k) and of w_i w_i^T (2k x 2k, row-major), which the subspace minimisation
   // needs. Formed over the free unknowns at t = 0, less each breakpoint the path passed.
   std::vector<double> free_gradient, free_gram;
-  // Whether `list` came back holding every unknown off the bound at t = 0, in order (a
-  // superset, in order, of those off it at x(t)).
+  // Whether the work's list came back holding every unknown off the bound at t = 0, in
+  // order (a superset, in order, of those off it at x(t)).
   bool listed_free = false;
+  // Whether the work's rows came back holding those of W at the listed unknowns (when the free
+  // ones are listed and few): the subspace minimisation needs them again, and a sweep of
+  // the copy costs less than a second gather. See kept_row_entry.
+  bool kept_rows = false;
 };
 using Indices = std::vector<std::int64_t, FieldAllocator<std::int64_t>>;
 struct Breakpoint {
@@ -50,12 +55,31 @@ struct Breakpoint {
   std::int64_t i;
 };
 using Breakpoints = std::vector<Breakpoint, FieldAllocator<Breakpoint>>;
+// The rows are gathered and kept in blocks of this many listed unknowns (the last block
+// shorter), a block's 2k columns one after another: entry j of the row of the p-th of
+// `listed` unknowns.
+constexpr std::int64_t kept_row_block = 256;
+inline double kept_row_entry(const Field &rows, int columns, std::int64_t listed,
+                             std::int64_t p, int j) {
+  const std::int64_t begin = p - p % kept_row_block;
+  const std::int64_t length = std::min(kept_row_block, listed - begin);
+  return rows[static_cast<std::size_t>(begin * columns + j * length + (p - begin))];
+}
+// The work space of generalized_cauchy_point, kept by the caller between iterations.
+struct CauchyWork {
+  Indices list;      // the listed unknowns (see CauchyPoint::listed_free)
+  Breakpoints heap;  // the breakpoints the path has not passed
+  Field rows;        // the rows of W at the listed unknowns (see CauchyPoint::kept_rows)
+  // Which set the last call listed: the guess that lets one pass count the unknowns on the
+  // bound and list them.
+  enum class Listed { none_yet, free, on_bound } last_listed = Listed::none_yet;
+};
 // The bound x >= lower holds on the first `bounded` of the n unknowns, none on the others.
 // g must be the gradient of bfgs's last add_pair (its products with the pairs, W^T g, are
-// used); list and heap are work space, kept by the caller between iterations.
+// used).
 CauchyPoint generalized_cauchy_point(const double *x, const double *g, std::int64_t n,
                                      std::int64_t bounded, double lower,
                                      const CompactBfgs &bfgs, const Reductions &reductions,
-                                     Indices &list, Breakpoints &heap);
+                                     CauchyWork &work);
 
 }  // namespace asp

@@ -352,11 +352,9 @@ TEST(Lbfgsb, GeneralizedCauchyPointIsTheFirstMinimiserAlongThePath) {
       s.push_back(sk);
       y.push_back(yk);
     }
-    asp::Indices list;
-    asp::Breakpoints heap;
+    asp::CauchyWork work;
     const asp::CauchyPoint cauchy =
-        asp::generalized_cauchy_point(x.data(), g.data(), n, n, 0.0, bfgs, reductions, list,
-                                      heap);
+        asp::generalized_cauchy_point(x.data(), g.data(), n, n, 0.0, bfgs, reductions, work);
     const std::vector<double> b =
         pairs == 0 ? std::vector<double>{} : bfgs_matrix(n, s, y);
     std::vector<double> identity(static_cast<std::size_t>(n * n), 0.0);
