@@ -84,7 +84,7 @@ CauchyPoint generalized_cauchy_point(const double *x, const double *g, std::int6
                                      std::int64_t bounded, double lower,
                                      const CompactBfgs &bfgs, const Reductions &reductions,
                                      CauchyWork &work) {
-  const auto bound = [&](std::int64_t i) { return i < bounded ? lower : -infinity; };
+  const Bound bound{bounded, lower};
   const int k2 = bfgs.columns();
   const double theta = bfgs.theta();
   const auto size = static_cast<std::size_t>(k2);

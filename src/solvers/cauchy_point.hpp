@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "core/aligned_field.hpp"
@@ -14,6 +15,16 @@
 #include "solvers/compact_bfgs.hpp"
 
 namespace asp {
+
+// The bound of unknown i: `lower` on the first `bounded` unknowns, none on the others. A
+// value, so that the kernels hold it in registers.
+struct Bound {
+  std::int64_t bounded;
+  double lower;
+  double operator()(std::int64_t i) const {
+    return i < bounded ? lower : -std::numeric_limits<double>::infinity();
+  }
+};
 
 // Whether unknown i sits on the bound at the point t of the projected path x(t): it was on
 // the bound with g pushing outwards (t = 0), or its breakpoint (x_i - lower)/g_i is at most

@@ -28,14 +28,6 @@ constexpr double unbounded_step = 1e10;
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
-// The bound of unknown i: `lower` on the first `bounded` unknowns, none on the others. A
-// value, so that the kernels hold it in registers.
-struct Bound {
-  std::int64_t bounded;
-  double lower;
-  double operator()(std::int64_t i) const { return i < bounded ? lower : -infinity; }
-};
-
 // An unknown's part of the direction from its x_bar: returns d = max(x_bar, bound) - x, and
 // adds its shares of the sums g.d and d.d and of the maximum of -(step to the bound), whose
 // negative is the largest feasible step. (The division is by d, or by -1 where d does not
@@ -62,8 +54,7 @@ class Lbfgsb {
       : f_(f),
         n_(f.size()),
         total_(static_cast<std::int64_t>(f.total_size())),
-        bounded_(f.bounded_size()),
-        lower_(f.lower_bound()),
+        bound_{f.bounded_size(), f.lower_bound()},
         reductions_(f.reductions()),
         x_(f.variable().data()),
         g_(static_cast<std::size_t>(n_)),
@@ -84,8 +75,8 @@ class Lbfgsb {
     if (monitor.should_stop(0, observe(f_, x_, g_.data(), value_, monitor))) return;
     bool first = true;
     for (std::int64_t iteration = 1;;) {
-      const CauchyPoint cauchy = generalized_cauchy_point(x_, g_.data(), n_, bounded_, lower_, bfgs_,
-                                                          reductions_, work_);
+      const CauchyPoint cauchy = generalized_cauchy_point(
+          x_, g_.data(), n_, bound_.bounded, bound_.lower, bfgs_, reductions_, work_);
       subspace_minimisation(cauchy);
       const Search search = line_search(first);
       if (search == Search::not_finite) {
@@ -171,7 +162,7 @@ class Lbfgsb {
     const double inverse_theta = 1.0 / bfgs_.theta(), t = cauchy.t;
     const double *x = x_, *g = g_.data(), *u = u_.data();
     double *d = d_, *x_old = x_old_.data();
-    const Bound bound{bounded_, lower_};
+    const Bound bound = bound_;
     // The free unknowns, when they are few, from a list. The Cauchy point's, with its kept
     // rows, serves as it is (the unknowns the path took to the bound are skipped);
     // otherwise those it took leave it, or a pass lists the free ones.
@@ -252,6 +243,7 @@ class Lbfgsb {
     double *d = d_;
     const CompactBfgs &bfgs = bfgs_;
     const int k2 = bfgs_.columns();
+    const Bound bound = bound_;
     // d <- the unprojected step from the Cauchy point, 0 at the bound.
     loops::for_each(n_, [&](std::int64_t i) {
       const double cauchy_i = x[i] - t * g[i];
@@ -276,7 +268,7 @@ class Lbfgsb {
   bool finish_direction() {
     const double *x = x_, *g = g_.data();
     double *d = d_, *x_old = x_old_.data();
-    const Bound bound{bounded_, lower_};
+    const Bound bound = bound_;
     return take_direction_sums(loops::sums_and_max<2>(
         reductions_, n_, [=](std::int64_t i, double *sum, double &max) {
           x_old[i] = x[i];
@@ -320,6 +312,7 @@ class Lbfgsb {
   void move_to(double step) {
     const double *x_old = x_old_.data(), *d = d_;
     double *x = x_;
+    const Bound bound = bound_;
     loops::for_each(n_, [&](std::int64_t i) {
       const double moved = x_old[i] + step * d[i];
       x[i] = moved > bound(i) ? moved : bound(i);
@@ -336,11 +329,7 @@ class Lbfgsb {
   Formulation &f_;
   std::int64_t n_;
   std::int64_t total_;  // unknowns over all processes
-  // The bound of unknown i: lower_bound() on the first bounded_, none on the others.
-  double bound(std::int64_t i) const { return i < bounded_ ? lower_ : -infinity; }
-
-  std::int64_t bounded_;
-  double lower_;
+  const Bound bound_;  // the formulation's: lower_bound() on its first bounded_size() unknowns
   const Reductions &reductions_;
   double *x_;
   double value_ = 0.0;
