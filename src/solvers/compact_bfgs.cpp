@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "core/loops.hpp"
+#include "solvers/pair_products.hpp"
 
 namespace asp {
 
@@ -42,7 +43,10 @@ bool solve_small(std::vector<double> &a, int size, double *b, int count) {
 }
 
 CompactBfgs::CompactBfgs(std::int64_t n, int memory, const Reductions &reductions)
-    : n_(n), memory_(memory), reductions_(reductions) {
+    : n_(n),
+      memory_(memory),
+      reductions_(reductions),
+      pair_products_(pair_products(best_kernel_variant())) {
   const auto m = static_cast<std::size_t>(memory);
   s_.resize(m);
   y_.resize(m);
@@ -73,56 +77,16 @@ bool CompactBfgs::add_pair(const double *x, Field &x_old, const double *g, Field
     stored_s[j] = s_[slot(j)].data();
     stored_y[j] = y_[slot(j)].data();
   }
-  // One pass: each block of s and y is formed, then met by every stored pair while it is in
-  // cache, so that each field is read once. The kernel works on its own copies of the
-  // pointers: through the captured references GCC vectorises the products as gathers,
-  // at twice the instructions.
-  loops::block_sums(reductions_, n_, own + 5, sums.data(),
-                    [&](std::int64_t begin, std::int64_t end, double *sum) {
-                      const double *__restrict xn = x;
-                      const double *__restrict gn = g;
-                      double *__restrict s = x_old.data();
-                      double *__restrict y = g_old.data();
-                      double ss = 0.0, sy = 0.0, yy = 0.0, gs = 0.0, gy = 0.0;
-#pragma omp simd reduction(+ : ss, sy, yy, gs, gy)
-                      for (std::int64_t i = begin; i < end; ++i) {
-                        const double si = xn[i] - s[i], yi = gn[i] - y[i];
-                        s[i] = si;
-                        y[i] = yi;
-                        ss += si * si;
-                        sy += si * yi;
-                        yy += yi * yi;
-                        gs += gn[i] * si;
-                        gy += gn[i] * yi;
-                      }
-                      sum[own] += ss;
-                      sum[own + 1] += sy;
-                      sum[own + 2] += yy;
-                      sum[own + 3] += gs;
-                      sum[own + 4] += gy;
-                      for (int j = 0; j < k; ++j) {
-                        const double *__restrict sj = stored_s[j];
-                        const double *__restrict yj = stored_y[j];
-                        double a = 0.0, b = 0.0, c = 0.0, d = 0.0, e = 0.0, f = 0.0;
-#pragma omp simd reduction(+ : a, b, c, d, e, f)
-                        for (std::int64_t i = begin; i < end; ++i) {
-                          a += s[i] * sj[i];
-                          b += s[i] * yj[i];
-                          c += y[i] * sj[i];
-                          d += y[i] * yj[i];
-                          e += gn[i] * sj[i];
-                          f += gn[i] * yj[i];
-                        }
-                        double *out = sum + 6 * j;
-                        out[0] += a;
-                        out[1] += b;
-                        out[2] += c;
-                        out[3] += d;
-                        out[4] += e;
-                        out[5] += f;
-                      }
-                    },
-                    loops::sweep_block(n_));
+  // One pass over blocks long enough for the prefetchers (loops::sweep_block), in the
+  // variant this CPU runs best (pair_products.hpp).
+  const PairBlock block{x, g, x_old.data(), g_old.data(), stored_s.data(), stored_y.data(), k};
+  const PairProducts products = pair_products_;
+  loops::block_sums(
+      reductions_, n_, own + 5, sums.data(),
+      [&](std::int64_t begin, std::int64_t end, double *sum) {
+        products(block, begin, end, sum);
+      },
+      loops::sweep_block(n_));
   for (int j = 0; j < k; ++j) {
     sg_[j] = sums[6 * j + 4];
     yg_[j] = sums[6 * j + 5];

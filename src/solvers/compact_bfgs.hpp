@@ -18,6 +18,7 @@
 
 #include "core/aligned_field.hpp"
 #include "core/reductions.hpp"
+#include "solvers/pair_products.hpp"
 
 namespace asp {
 
@@ -75,6 +76,7 @@ class CompactBfgs {
   std::int64_t n_;
   int memory_;
   const Reductions &reductions_;
+  PairProducts pair_products_;  // the variant this CPU runs best
   int k_ = 0;
   int oldest_ = 0;
   double theta_ = 1.0;
