@@ -479,6 +479,16 @@ Outcome solve(asp_solver *solver, const Scene &s, asp_system *sys, int control, 
 // The rules every solve must keep
 // ------------------------------------------------------------------------------------------
 
+// The scale of the numbers in g = u - h + max h - delta, which the consistency's rounding
+// allowance is a fraction of.
+double consistency_scale(const Scene &s, const Outcome &o) {
+  const double hmax = *std::max_element(s.h.begin(), s.h.end());
+  const double hmin = *std::min_element(s.h.begin(), s.h.end());
+  double umax = 0;
+  for (double x : o.u) umax = std::max(umax, std::fabs(x));
+  return umax + (hmax - hmin) + std::fabs(o.delta) + std::fabs(hmax);
+}
+
 // Checks a finished solve; appends what it broke to `bad`.
 void check_rules(const Scene &s, const Settings &set, int control, double value, const Outcome &o,
                  std::vector<std::string> &bad) {
@@ -510,10 +520,7 @@ void check_rules(const Scene &s, const Settings &set, int control, double value,
   // error x p_ref x |c|_1, the largest displacement of such a pressure
   // (compliance_l1; periodic substrate: the free one has no independent compliance here).
   const double hmax = *std::max_element(s.h.begin(), s.h.end());
-  const double hmin = *std::min_element(s.h.begin(), s.h.end());
-  double umax = 0;
-  for (double x : o.u) umax = std::max(umax, std::fabs(x));
-  const double scale = umax + (hmax - hmin) + std::fabs(o.delta) + std::fabs(hmax);
+  const double scale = consistency_scale(s, o);
   double worst = 0;
   for (int64_t i = 0; i < s.n(); ++i)
     worst = std::max(worst, std::fabs(o.g[i] - (o.u[i] - s.h[i] + hmax - o.delta)));
@@ -1882,10 +1889,7 @@ std::vector<std::string> self_test(const Case &cs, const Cell &cell, const Cell 
   // (the residual's part at most about 1e-9 of it on the matrix's scenes).
   {
     Outcome x = o;
-    double scale = 0;
-    for (double v : x.u) scale = std::max(scale, std::fabs(v));
-    for (double v : s.h) scale = std::max(scale, std::fabs(v));
-    scale += std::fabs(x.delta);
+    const double scale = consistency_scale(s, x);
     size_t at = 0;
     for (size_t i = 0; i < x.g.size(); ++i)
       if (x.g[i] > x.g[at]) at = i;

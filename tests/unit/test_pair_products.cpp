@@ -80,8 +80,10 @@ void expect_products(KernelVariant variant, const std::string &name) {
     own[3] += g * s;
     own[4] += g * y;
   }
-  // Every term is positive: a sum of n rounded products is within n epsilon of the exact one.
-  const double bound = n * std::numeric_limits<double>::epsilon();
+  // Every term is positive, so the relative error of a sum is at most that of its worst
+  // term: one subtraction (s or y), one product and n - 1 additions, (n + 1) epsilon to
+  // first order.
+  const double bound = (n + 2) * std::numeric_limits<double>::epsilon();
   for (std::size_t e = 0; e < sum.size(); ++e) {
     const double exact = static_cast<double>(expected[e]);
     EXPECT_NEAR(sum[e], exact, bound * exact) << name << " sum " << e;
