@@ -42,6 +42,7 @@
 #include <vector>
 
 #include "bench/bench_common.hpp"
+#include "bench/lbfgsb_floor.hpp"
 #include "core/aligned_field.hpp"
 #include "core/grid.hpp"
 #include "core/transform_clock.hpp"
@@ -235,15 +236,39 @@ int main(int argc, char **argv) {
     // lbfgsb's gather of W's rows at the listed unknowns, in streams (`gather`): its floor
     // counts it once per iteration, as the library needs it (the step reads the rows that the
     // Cauchy point kept).
-    std::string gather;
+    std::string gather, passes;
     if (algorithm == "lbfgsb") {
-      const double memory = solver.option("memory");
+      const int memory = static_cast<int>(solver.option("memory"));
       const std::vector<double> pressure(system.state().pressure.begin(),
                                          system.state().pressure.end());
+      const std::vector<double> gap(system.state().gap.begin(), system.state().gap.end());
+      const double gather_streams = row_gather_seconds(pressure, 2 * memory) / stream;
       char text[32];
-      std::snprintf(text, sizeof text, " %8.1f",
-                    row_gather_seconds(pressure, 2 * static_cast<int>(memory)) / stream);
+      std::snprintf(text, sizeof text, " %8.1f", gather_streams);
       gather = text;
+      // The floor measured pass by pass (lbfgsb_floor.hpp): the Cauchy point, the step and
+      // the products once per iteration, the trial point, the slope and the gradient once
+      // per evaluation.
+      const bench::LbfgsbFloor least = bench::lbfgsb_floor_seconds(pressure, gap, memory);
+      const double per_iteration_evaluations =
+          evaluations / static_cast<double>(std::max<std::int64_t>(r.iterations, 1));
+      const double passes_streams =
+          (least.products + least.cauchy + least.step +
+           per_iteration_evaluations * (least.trial + least.slope + least.gradient)) /
+          stream;
+      const double measured_floor =
+          in_transforms * pair_in_solve / fft + (passes_streams + gather_streams) * stream / fft;
+      char line[512];
+      std::snprintf(line, sizeof line,
+                    "\n       lbfgsb's passes at their least, in streams: products %.1f, "
+                    "cauchy %.1f, step %.1f, trial %.1f, slope %.1f, gradient %.1f "
+                    "(%.2f evaluations per iteration); with the gather %.1f: floor %.2f "
+                    "pairs, iteration / floor %.2f",
+                    least.products / stream, least.cauchy / stream, least.step / stream,
+                    least.trial / stream, least.slope / stream, least.gradient / stream,
+                    per_iteration_evaluations, passes_streams + gather_streams, measured_floor,
+                    per_iteration / fft / measured_floor);
+      passes = line;
     }
     std::printf("%6ld %10.2f %12.3f %12.3f %7.2f %6lld %6.0f %9.3f %7.2f %9.2f %9.4f %8.1f "
                 "%+8.1f%% %8.2f %8.2f %8.3f %8.1f%s%s\n",
@@ -252,6 +277,7 @@ int main(int argc, char **argv) {
                 per_evaluation / fft, r.seconds, system.contact_fraction(), bytes_per_pixel,
                 history_cost, in_transforms, pair_in_solve / fft, stream / fft, rest_in_streams,
                 gather.c_str(), r.converged() ? "" : "  (not converged)");
+    if (!passes.empty()) std::printf("%s\n", passes.c_str());
     std::fflush(stdout);
   }
   return 0;

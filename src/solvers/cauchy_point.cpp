@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 #include "core/loops.hpp"
@@ -94,7 +95,8 @@ CauchyPoint generalized_cauchy_point(const double *x, const double *g, std::int6
   // The direction d = -g, zero where the bound holds the unknown (t_i = 0); the slope
   // f' = g.d and p = W^T d. One pass counts the unknowns the bound holds, sums the slope,
   // lists the unknowns off the bound (or those on it, if fewer), for the sums over the free
-  // set, and puts the breakpoints t_i = (x_i - lower)/g_i in a heap, smallest first. Which of
+  // set, and collects the breakpoints t_i = (x_i - lower)/g_i (below), which then go into a
+  // heap, smallest first. Which of
   // the two sets to list is known only after the count: the pass lists the one the last
   // call listed, and a second pass lists the other if that guess was wrong (or if there was
   // no last call: a first guess would be wrong half the time, and on a large set). The pass
@@ -110,38 +112,56 @@ CauchyPoint generalized_cauchy_point(const double *x, const double *g, std::int6
   heap.clear();
   const bool listing_now = k2 > 0 && guess != Listed::none_yet;
   const bool list_held = guess == Listed::on_bound;
+  // The breakpoint of an unknown off the bound that g pushes towards it (the division by 1
+  // elsewhere only keeps every entry's arithmetic harmless), and whether it has one. Every
+  // unknown off the bound is free: when the pass lists the free set, their breakpoints come
+  // from the list afterwards, a division for each listed unknown instead of one for every
+  // unknown.
+  const auto breakpoint_at = [](double xi, double gi, double bi) {
+    return (xi - bi) / (gi > 0.0 ? gi : 1.0);
+  };
+  const auto has_breakpoint = [](double xi, double gi, double bi, double t) {
+    return gi > 0.0 && xi > bi && std::isfinite(t);
+  };
+  const bool breakpoints_in_pass = !(listing_now && !list_held);
   constexpr std::int64_t buffered = 512;
   std::int64_t listed_buffer[buffered];
   Breakpoint breakpoint_buffer[buffered];
   double sums[2] = {0.0, 0.0};
-  for (std::int64_t chunk = 0; chunk < n; chunk += loops::chunk_entries) {
-    double held_count = 0.0, slope_sum = 0.0;
-    const std::int64_t chunk_end = std::min(n, chunk + loops::chunk_entries);
-    for (std::int64_t begin = chunk; begin < chunk_end; begin += buffered) {
-      const std::int64_t end = std::min(chunk_end, begin + buffered);
-      std::int64_t listed = 0, broken = 0;
-      double held_here = 0.0, slope_here = 0.0;
-      for (std::int64_t i = begin; i < end; ++i) {
-        const double xi = x[i], gi = g[i], bi = bound(i);
-        const bool held = at_bound(xi, gi, bi, 0.0);
-        held_here += held ? 1.0 : 0.0;
-        slope_here += held ? 0.0 : gi * gi;
-        listed_buffer[listed] = i;
-        listed += listing_now && held == list_held ? 1 : 0;
-        // The breakpoint of an unknown off the bound that g pushes towards it (the division
-        // by 1 elsewhere only keeps every entry's arithmetic harmless).
-        const double breakpoint = (xi - bi) / (gi > 0.0 ? gi : 1.0);
-        breakpoint_buffer[broken] = {breakpoint, i};
-        broken += gi > 0.0 && xi > bi && std::isfinite(breakpoint) ? 1 : 0;
+  const auto pass = [&](auto with_breakpoints) {
+    for (std::int64_t chunk = 0; chunk < n; chunk += loops::chunk_entries) {
+      double held_count = 0.0, slope_sum = 0.0;
+      const std::int64_t chunk_end = std::min(n, chunk + loops::chunk_entries);
+      for (std::int64_t begin = chunk; begin < chunk_end; begin += buffered) {
+        const std::int64_t end = std::min(chunk_end, begin + buffered);
+        std::int64_t listed = 0, broken = 0;
+        double held_here = 0.0, slope_here = 0.0;
+        for (std::int64_t i = begin; i < end; ++i) {
+          const double xi = x[i], gi = g[i], bi = bound(i);
+          const bool held = at_bound(xi, gi, bi, 0.0);
+          held_here += held ? 1.0 : 0.0;
+          slope_here += held ? 0.0 : gi * gi;
+          listed_buffer[listed] = i;
+          listed += listing_now && held == list_held ? 1 : 0;
+          if constexpr (decltype(with_breakpoints)::value) {
+            const double t = breakpoint_at(xi, gi, bi);
+            breakpoint_buffer[broken] = {t, i};
+            broken += has_breakpoint(xi, gi, bi, t) ? 1 : 0;
+          }
+        }
+        held_count += held_here;
+        slope_sum += slope_here;
+        list.insert(list.end(), listed_buffer, listed_buffer + listed);
+        heap.insert(heap.end(), breakpoint_buffer, breakpoint_buffer + broken);
       }
-      held_count += held_here;
-      slope_sum += slope_here;
-      list.insert(list.end(), listed_buffer, listed_buffer + listed);
-      heap.insert(heap.end(), breakpoint_buffer, breakpoint_buffer + broken);
+      sums[0] += held_count;
+      sums[1] += slope_sum;
     }
-    sums[0] += held_count;
-    sums[1] += slope_sum;
-  }
+  };
+  if (breakpoints_in_pass)
+    pass(std::true_type{});
+  else
+    pass(std::false_type{});
   reductions.combine_sums(sums, 2);
   const auto held = static_cast<std::int64_t>(sums[0]);
   double unknowns = static_cast<double>(n);
@@ -159,6 +179,18 @@ CauchyPoint generalized_cauchy_point(const double *x, const double *g, std::int6
     loops::select(n, listed, list);
   }
   work.last_listed = listing;
+  if (!breakpoints_in_pass) {
+    // In increasing order of the unknowns, as from the pass: the heap is the same.
+    const auto add = [&](std::int64_t i) {
+      const double xi = x[i], gi = g[i], bi = bound(i), t = breakpoint_at(xi, gi, bi);
+      if (has_breakpoint(xi, gi, bi, t)) heap.push_back({t, i});
+    };
+    if (listing == Listed::free) {
+      for (const std::int64_t i : list) add(i);
+    } else {
+      for (std::int64_t i = 0; i < n; ++i) add(i);
+    }
+  }
   const auto later = [](const Breakpoint &a, const Breakpoint &b) { return a.t > b.t; };
   std::make_heap(heap.begin(), heap.end(), later);
   cauchy.listed_free = k2 > 0 && !complement;
