@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // What one evaluation of L-BFGS-B must cost beyond its transforms, measured: each pass the
-// algorithm needs, written on its own at its best and timed on fields of the grid's size, on
+// algorithm needs, written on its own at its best and timed on fields of the grid's size (the best of fifteen timings), on
 // the state a solve reached (the bench's scene, on the pressure). The floor of an iteration
 // counted in field streams (pk_benchmark.cpp) prices every pass at the fields it reads and
 // writes; some of L-BFGS-B's passes cost more than their traffic whatever their code: the
@@ -66,11 +66,12 @@ inline Pair splat(double a) { return Pair{a, a}; }
 inline Pair select(Mask mask, Pair a, Pair b) { return mask ? a : b; }
 inline Pair larger(Pair a, Pair b) { return select(a > b, a, b); }
 
-// The best of five timings of f(), in seconds.
+// The best of fifteen timings of f(), in seconds: on this shared machine one pass's best of
+// five still moved by half between runs (the step's from 10 to 18 streams).
 template <class F>
-double best_of_five(F &&f) {
+double best_of(F &&f) {
   double best = 1e300;
-  for (int batch = 0; batch < 5; ++batch) {
+  for (int batch = 0; batch < 15; ++batch) {
     const auto start = std::chrono::steady_clock::now();
     f();
     best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
@@ -121,7 +122,7 @@ inline LbfgsbFloor lbfgsb_floor_seconds(const std::vector<double> &pressure,
                                stored_s.data(), stored_y.data(), memory};
     std::vector<double> sums(static_cast<std::size_t>(6 * memory + 5));
     const std::int64_t piece = asp::loops::sweep_block(n);
-    floor.products = best_of_five([&] {
+    floor.products = best_of([&] {
       std::fill(sums.begin(), sums.end(), 0.0);
       for (std::int64_t b = 0; b < n; b += piece)
         products(block, b, std::min(n, b + piece), sums.data());
@@ -139,7 +140,7 @@ inline LbfgsbFloor lbfgsb_floor_seconds(const std::vector<double> &pressure,
       std::int64_t i;
     };
     std::vector<Breakpoint> breakpoints(size);
-    floor.cauchy = best_of_five([&] {
+    floor.cauchy = best_of([&] {
       const double *x = xp, *g = gp;
       std::int64_t *at = list.data();
       Breakpoint *found = breakpoints.data();
@@ -171,7 +172,7 @@ inline LbfgsbFloor lbfgsb_floor_seconds(const std::vector<double> &pressure,
     asp::Field kept(static_cast<std::size_t>(listed) * k2 + 1, 1e-3);
     std::vector<double> weight(static_cast<std::size_t>(k2), 0.5);
     const double inverse_theta = 1.0 / theta;
-    floor.step = best_of_five([&] {
+    floor.step = best_of([&] {
       const double *x = xp, *g = gp, *rows = kept.data(), *w = weight.data();
       const std::int64_t *at = list.data();
       double *d = dp, *x_old = x_oldp;
@@ -213,7 +214,7 @@ inline LbfgsbFloor lbfgsb_floor_seconds(const std::vector<double> &pressure,
   // trial: x = max(x_old + a d, lower).
   {
     asp::Field trial(size);
-    floor.trial = best_of_five([&] {
+    floor.trial = best_of([&] {
       const double *x_old = x_oldp, *d = dp;
       double *out = trial.data();
       const Pair a = splat(step), bound = splat(lower);
@@ -226,7 +227,7 @@ inline LbfgsbFloor lbfgsb_floor_seconds(const std::vector<double> &pressure,
   }
 
   // slope: g.d.
-  floor.slope = best_of_five([&] {
+  floor.slope = best_of([&] {
     const double *g = gp, *d = dp;
     double total = 0.0;
 #pragma omp simd reduction(+ : total)
@@ -241,7 +242,7 @@ inline LbfgsbFloor lbfgsb_floor_seconds(const std::vector<double> &pressure,
     std::vector<std::complex<double>> spectrum(half, {1.0, 0.5});
     asp::Field compliance(half, 0.25), u(size, 1.0);
     const double *up = u.data();
-    floor.gradient = best_of_five([&] {
+    floor.gradient = best_of([&] {
       double *s = reinterpret_cast<double *>(spectrum.data());
       const double *c = compliance.data(), *u = up, *h = hp, *x = xp;
       double *g = g_oldp;

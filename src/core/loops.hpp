@@ -20,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/lanes.hpp"
 #include "core/reductions.hpp"
 #include "core/thread_pool.hpp"
 #include "core/threads.hpp"
@@ -250,6 +251,60 @@ std::pair<std::array<double, K>, std::array<double, M>> sums_and_maxima(
         for (std::int64_t i = begin; i < end; ++i) body(i, sum, max);
         for (int k = 0; k < K; ++k) part.first[k] = sum[k];
         for (int m = 0; m < M; ++m) part.second[m] = none_if_lowest(max[m]);
+      },
+      [](Result &total, const Result &part) {
+        for (int k = 0; k < K; ++k) total.first[k] += part.first[k];
+        for (int m = 0; m < M; ++m)
+          total.second[m] = part.second[m] > total.second[m] ? part.second[m] : total.second[m];
+      });
+  reductions.combine_sums(out.first.data(), K);
+  reductions.combine_maxima(out.second.data(), M);
+  return out;
+}
+
+// for_each for a kernel written for both value types of core/lanes.hpp: body(i, V{})
+// handles the entries i and i + 1 with V = lanes::Pair, entry i alone with V = double (the
+// last entry of a piece of odd length).
+template <class Body>
+void for_each_in_lanes(std::int64_t n, Body &&body) {
+  in_pieces(n, chunk_entries, threads_for(n), [&](std::int64_t begin, std::int64_t end) {
+    auto kernel = body;  // a copy per piece, as in sums_and_max
+    std::int64_t i = begin;
+    for (; i + 2 <= end; i += 2) kernel(i, lanes::Pair{});
+    if (i < end) kernel(i, 0.0);
+  });
+}
+
+// sums_and_maxima for a kernel written for both value types of core/lanes.hpp:
+// body(i, sum, max), with sum and max arrays of lanes::Pair, handles the entries i and i + 1;
+// with arrays of double, entry i alone (the last entry of a chunk of odd length). Each chunk
+// adds up its two lanes at its end, so that the results still depend on n alone.
+template <int K, int M, class Body>
+std::pair<std::array<double, K>, std::array<double, M>> sums_and_maxima_in_lanes(
+    const Reductions &reductions, std::int64_t n, Body &&body) {
+  using Result = std::pair<std::array<double, K>, std::array<double, M>>;
+  using lanes::Pair;
+  constexpr double none = -std::numeric_limits<double>::infinity();
+  Result initial{};
+  initial.second.fill(none);
+  Result out = reduce_in_parts(
+      n, initial,
+      [&](std::int64_t begin, std::int64_t end, Result &part) {
+        Pair sum[K], max[M];
+        for (int k = 0; k < K; ++k) sum[k] = lanes::splat<Pair>(0.0);
+        for (int m = 0; m < M; ++m) max[m] = lanes::splat<Pair>(none);
+        // A copy of the kernel per piece, as in sums_and_max.
+        auto kernel = body;
+        std::int64_t i = begin;
+        for (; i + 2 <= end; i += 2) kernel(i, sum, max);
+        double last_sum[K] = {}, last_max[M];
+        for (int m = 0; m < M; ++m) last_max[m] = none;
+        if (i < end) kernel(i, last_sum, last_max);
+        for (int k = 0; k < K; ++k) part.first[k] = lanes::lane_sum(sum[k]) + last_sum[k];
+        for (int m = 0; m < M; ++m) {
+          const double lane = lanes::lane_max(max[m]);
+          part.second[m] = last_max[m] > lane ? last_max[m] : lane;
+        }
       },
       [](Result &total, const Result &part) {
         for (int k = 0; k < K; ++k) total.first[k] += part.first[k];

@@ -40,9 +40,10 @@ double bound_residual(const Reductions &reductions, std::int64_t n, std::int64_t
 // largest fl(g_i - shift) is fl(max_i g_i - shift).
 constexpr int bound_residual_maxima = 2;
 
-inline void gather_bound_residual(double x, double gradient, double lower, double *maxima,
-                                  double &finite_check) {
-  const double g = gradient;
+// For one entry (V = double) or two (lanes::Pair, core/lanes.hpp).
+template <class V>
+inline void gather_bound_residual(V x, V gradient, V lower, V *maxima, V &finite_check) {
+  const V g = gradient;
   maxima[0] = (x > lower) & (g > maxima[0]) ? g : maxima[0];
   maxima[1] = -g > maxima[1] ? -g : maxima[1];
   finite_check += g - g;

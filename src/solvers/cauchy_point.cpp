@@ -56,11 +56,39 @@ void sums_over_list(const Indices &list, bool complement, const double *g,
                         return total;
                       };
                       const auto row = [&](int j) { return rows + j * stride; };
-                      for (int j = 0; j < k2; ++j) sum[j] += bfgs.scale(j) * dot_block(gl, row(j));
-                      for (int r = 0; r < k2; ++r)
+                      // Four products with one row at a time: a product alone is a chain
+                      // of additions, each waiting for the last; four are independent.
+                      const auto four_dots = [&](const double *a, const double *b,
+                                                 double *out) {
+                        double t0 = 0.0, t1 = 0.0, t2 = 0.0, t3 = 0.0;
+                        const double *b0 = b, *b1 = b + stride, *b2 = b + 2 * stride,
+                                     *b3 = b + 3 * stride;
+#pragma omp simd reduction(+ : t0, t1, t2, t3)
+                        for (std::int64_t p = 0; p < length; ++p) {
+                          t0 += a[p] * b0[p];
+                          t1 += a[p] * b1[p];
+                          t2 += a[p] * b2[p];
+                          t3 += a[p] * b3[p];
+                        }
+                        out[0] = t0;
+                        out[1] = t1;
+                        out[2] = t2;
+                        out[3] = t3;
+                      };
+                      const auto products_with = [&](const double *a, int first, double *out) {
+                        int c = first;
+                        for (; c + 4 <= k2; c += 4) four_dots(a, row(c), out + (c - first));
+                        for (; c < k2; ++c) out[c - first] = dot_block(a, row(c));
+                      };
+                      std::vector<double> products(static_cast<std::size_t>(k2));
+                      double *dots = products.data();
+                      products_with(gl, 0, dots);
+                      for (int j = 0; j < k2; ++j) sum[j] += bfgs.scale(j) * dots[j];
+                      for (int r = 0; r < k2; ++r) {
+                        products_with(row(r), r, dots);
                         for (int c = r; c < k2; ++c)
-                          sum[k2 + r * k2 + c] +=
-                              bfgs.scale(r) * bfgs.scale(c) * dot_block(row(r), row(c));
+                          sum[k2 + r * k2 + c] += bfgs.scale(r) * bfgs.scale(c) * dots[c - r];
+                      }
                     });
   const std::vector<double> &wtg = bfgs.times_gradient(), &wtw = bfgs.gram();
   for (int j = 0; j < k2; ++j) a[j] = complement ? wtg[j] - sums[j] : sums[j];
@@ -130,17 +158,20 @@ CauchyPoint generalized_cauchy_point(const double *x, const double *g, std::int6
   double sums[2] = {0.0, 0.0};
   const auto pass = [&](auto with_breakpoints) {
     for (std::int64_t chunk = 0; chunk < n; chunk += loops::chunk_entries) {
-      double held_count = 0.0, slope_sum = 0.0;
+      std::int64_t held_count = 0;
+      double slope_sum = 0.0;
       const std::int64_t chunk_end = std::min(n, chunk + loops::chunk_entries);
       for (std::int64_t begin = chunk; begin < chunk_end; begin += buffered) {
         const std::int64_t end = std::min(chunk_end, begin + buffered);
-        std::int64_t listed = 0, broken = 0;
-        double held_here = 0.0, slope_here = 0.0;
-        for (std::int64_t i = begin; i < end; ++i) {
+        std::int64_t listed = 0, broken = 0, held_here = 0;
+        // The slope in two sums, the entries taken in turn: in one, each addition waits for
+        // the last, and that chain set the pass's pace (the count is an integer's).
+        double slope_even = 0.0, slope_odd = 0.0;
+        const auto entry = [&](std::int64_t i, double &slope) {
           const double xi = x[i], gi = g[i], bi = bound(i);
           const bool held = at_bound(xi, gi, bi, 0.0);
-          held_here += held ? 1.0 : 0.0;
-          slope_here += held ? 0.0 : gi * gi;
+          held_here += held ? 1 : 0;
+          slope += held ? 0.0 : gi * gi;
           listed_buffer[listed] = i;
           listed += listing_now && held == list_held ? 1 : 0;
           if constexpr (decltype(with_breakpoints)::value) {
@@ -148,13 +179,19 @@ CauchyPoint generalized_cauchy_point(const double *x, const double *g, std::int6
             breakpoint_buffer[broken] = {t, i};
             broken += has_breakpoint(xi, gi, bi, t) ? 1 : 0;
           }
+        };
+        std::int64_t i = begin;
+        for (; i + 2 <= end; i += 2) {
+          entry(i, slope_even);
+          entry(i + 1, slope_odd);
         }
+        if (i < end) entry(i, slope_even);
         held_count += held_here;
-        slope_sum += slope_here;
+        slope_sum += slope_even + slope_odd;
         list.insert(list.end(), listed_buffer, listed_buffer + listed);
         heap.insert(heap.end(), breakpoint_buffer, breakpoint_buffer + broken);
       }
-      sums[0] += held_count;
+      sums[0] += static_cast<double>(held_count);
       sums[1] += slope_sum;
     }
   };

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/aligned_field.hpp"
+#include "core/lanes.hpp"
 #include "core/reductions.hpp"
 #include "solvers/compact_bfgs.hpp"
 
@@ -24,6 +25,14 @@ struct Bound {
   double operator()(std::int64_t i) const {
     return i < bounded ? lower : -std::numeric_limits<double>::infinity();
   }
+  // The bounds of the entries a value of type V holds from i on (core/lanes.hpp).
+  template <class V>
+  V at(std::int64_t i) const {
+    if constexpr (lanes::width<V> == 1)
+      return (*this)(i);
+    else
+      return V{(*this)(i), (*this)(i + 1)};
+  }
 };
 
 // Whether unknown i sits on the bound at the point t of the projected path x(t): it was on
@@ -33,6 +42,10 @@ struct Bound {
 // rounding: it is on the bound either way.)
 inline bool at_bound(double x, double g, double lower, double t) {
   return g > 0.0 && x - lower <= t * g;
+}
+// The same test on two entries: a mask.
+inline auto at_bound(lanes::Pair x, lanes::Pair g, lanes::Pair lower, double t) {
+  return (g > 0.0) & (x - lower <= t * g);
 }
 
 // Whether a set of about `size` of `total` unknowns (over all processes) is better listed by

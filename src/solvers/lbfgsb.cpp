@@ -6,10 +6,13 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 #include "core/error.hpp"
+#include "core/lanes.hpp"
 #include "core/loops.hpp"
+#include "formulations/bound_residual.hpp"
 #include "formulations/dual_formulation.hpp"
 #include "solvers/line_search.hpp"
 #include "formulations/primal_formulation.hpp"
@@ -96,7 +99,9 @@ class Lbfgsb {
       }
       first = false;
       update_memory();
-      if (monitor.should_stop(iteration, observe(f_, x_, g_.data(), value_, monitor))) return;
+      if (monitor.should_stop(iteration,
+                              observe(f_, x_, g_.data(), trial_error_, value_, monitor)))
+        return;
       ++iteration;
     }
   }
@@ -184,16 +189,26 @@ class Lbfgsb {
     };
     std::array<double, 3> s;
     if (listed) {
-      // The unknowns on the bound are finished here; the free ones get x - g/theta, and
-      // their correction and finish from the list.
-      const auto body = [=](std::int64_t i, double *sum, double &max) {
-        x_old[i] = x[i];
-        if (fixed(i))
-          finish(i, bound(i), sum, max);
-        else
-          d[i] = x[i] - g[i] * inverse_theta;
+      // The unknowns on the bound are finished here (x_bar = lower, d = lower - x); the free
+      // ones get x - g/theta, and their correction and finish from the list. Two unknowns
+      // at a time (core/lanes.hpp), a free one adding nothing to the sums. Where d < 0 the
+      // step to the bound is d itself: finish_unknown's -(lower - x)/d is -1 exactly, with
+      // no division.
+      const auto body = [=](std::int64_t i, auto *sum, auto *max) {
+        using V = std::remove_pointer_t<decltype(sum)>;
+        const V xi = lanes::load<V>(x + i), gi = lanes::load<V>(g + i);
+        const V bi = bound.at<V>(i);
+        lanes::store(x_old + i, xi);
+        const auto on_bound = at_bound(xi, gi, bi, t);
+        const V finished = on_bound ? bi - xi : lanes::splat<V>(0.0);
+        sum[0] += gi * finished;
+        sum[1] += finished * finished;
+        const V limit = finished < 0.0 ? lanes::splat<V>(-1.0) : lanes::splat<V>(-infinity);
+        max[0] = max[0] > limit ? max[0] : limit;
+        lanes::store(d + i, on_bound ? finished : xi - gi * inverse_theta);
       };
-      s = loops::sums_and_max<2>(reductions_, n_, body);
+      const auto r = loops::sums_and_maxima_in_lanes<2, 1>(reductions_, n_, body);
+      s = {r.first[0], r.first[1], r.second[0]};
       // One sweep of the list, each unknown's row of W read at once: from the kept copy, or
       // gathered, the rows a few entries ahead fetched while this one is summed (the list's
       // gaps defeat the prefetchers).
@@ -300,7 +315,7 @@ class Lbfgsb {
         [&](double trial, double &value, double &slope) {
           move_to(trial);
           value = f_.value_and_gradient(x_, trial_gradient_.data());
-          slope = f_.dot(trial_gradient_.data(), d_);
+          slope = slope_and_error();
         },
         &value_);
     if (result == LineSearchResult::accepted) return Search::accepted;
@@ -308,14 +323,33 @@ class Lbfgsb {
     return result == LineSearchResult::not_finite ? Search::not_finite : Search::failed;
   }
 
+  // The slope g.d at the trial point, and in the same pass the monitor's error there: the
+  // bound's residual of x and its gradient, which is what Formulation::error measures of a
+  // formulation without a mean constraint (lbfgsb refuses one), to the same bits.
+  double slope_and_error() {
+    const double *x = x_, *g = trial_gradient_.data(), *d = d_;
+    const Bound bound = bound_;
+    const auto r = loops::sums_and_maxima_in_lanes<2, bound_residual_maxima>(
+        reductions_, n_, [=](std::int64_t i, auto *sum, auto *max) {
+          using V = std::remove_pointer_t<decltype(sum)>;
+          const V gi = lanes::load<V>(g + i);
+          sum[0] += gi * lanes::load<V>(d + i);
+          gather_bound_residual(lanes::load<V>(x + i), gi, bound.at<V>(i), max, sum[1]);
+        });
+    trial_error_ = bound_residual_at(r.second.data(), r.first[1], 0.0);
+    return r.first[0];
+  }
+
   // x <- max(x_old + step d, lower): the bound holds bitwise whatever the rounding.
   void move_to(double step) {
     const double *x_old = x_old_.data(), *d = d_;
     double *x = x_;
     const Bound bound = bound_;
-    loops::for_each(n_, [&](std::int64_t i) {
-      const double moved = x_old[i] + step * d[i];
-      x[i] = moved > bound(i) ? moved : bound(i);
+    loops::for_each_in_lanes(n_, [=](std::int64_t i, auto lanes_of) {
+      using V = decltype(lanes_of);
+      const V moved = lanes::load<V>(x_old + i) + step * lanes::load<V>(d + i);
+      const V bi = bound.at<V>(i);
+      lanes::store(x + i, moved > bi ? moved : bi);
     });
   }
 
@@ -339,6 +373,7 @@ class Lbfgsb {
   CompactBfgs bfgs_;
   std::vector<double> u_;
   double slope_ = 0.0, direction_norm_ = 0.0, largest_step_ = 0.0;
+  double trial_error_ = 0.0;  // the monitor's error at the last trial point
   CauchyWork work_;  // the Cauchy point's, whose list and rows the step reads
 };
 
