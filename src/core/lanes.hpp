@@ -6,8 +6,10 @@
 // branch. Such a kernel is written once, for a value type V that is either double (one
 // entry) or Pair (two), with load/store/splat below and the operators both types share
 // (arithmetic, comparisons, and the conditional `mask ? a : b`, which GCC and Clang take for
-// vectors as for scalars); loops::sums_and_maxima_in_lanes runs it. Sixteen bytes are the
-// x86-64 baseline the library is built for (SSE2).
+// vectors as for scalars; the same select written with bitwise operations on the lanes, GCC
+// moved through general registers, twice as slow); loops::sums_and_maxima_in_lanes and
+// loops::for_each_in_lanes run it. Sixteen bytes are the x86-64 baseline the library is
+// built for (SSE2).
 //
 // A kernel on Pair evaluates every lane, as a vector unit does: its divisions must not
 // divide by zero on a lane the scalar form would have skipped (select the divisor first).
