@@ -34,6 +34,7 @@
 #include <cmath>
 #include <complex>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 #include <vector>
@@ -56,6 +57,7 @@ namespace floor_kernels {
 using asp::lanes::Pair;
 using asp::lanes::store;
 using Mask = decltype(Pair{} > Pair{});
+constexpr int lanes = asp::lanes::width<Pair>;
 
 inline Pair load(const double *p) { return asp::lanes::load<Pair>(p); }
 inline Pair splat(double a) { return asp::lanes::splat<Pair>(a); }
@@ -177,7 +179,7 @@ inline LbfgsbFloor lbfgsb_floor_once(const std::vector<double> &pressure,
       const Pair scale = splat(inverse_theta);
       Pair slope = zero, norm = zero, max = none;
       std::int64_t i = 0;
-      for (; i + 2 <= n; i += 2) {
+      for (; i + lanes <= n; i += lanes) {
         const Pair xi = load(&x[i]), gi = load(&g[i]);
         store(&x_old[i], xi);
         const Mask fixed = (gi > zero) & (xi - bound <= t * gi);
@@ -188,8 +190,8 @@ inline LbfgsbFloor lbfgsb_floor_once(const std::vector<double> &pressure,
         norm += di * di;
         max = larger(max, select(di < zero, minus_one, none));
       }
-      double sums[2] = {slope[0] + slope[1], norm[0] + norm[1]};
-      double largest = max[0] > max[1] ? max[0] : max[1];
+      double sums[2] = {asp::lanes::lane_sum(slope), asp::lanes::lane_sum(norm)};
+      double largest = asp::lanes::lane_max(max);
       for (; i < n; ++i) d[i] = x_old[i] = x[i];
       for (std::int64_t p = 0; p < listed; ++p) {
         const std::int64_t j = at[p];
@@ -215,7 +217,7 @@ inline LbfgsbFloor lbfgsb_floor_once(const std::vector<double> &pressure,
       double *out = trial.data();
       const Pair a = splat(step), bound = splat(lower);
       std::int64_t i = 0;
-      for (; i + 2 <= n; i += 2)
+      for (; i + lanes <= n; i += lanes)
         store(&out[i], larger(load(&x_old[i]) + a * load(&d[i]), bound));
       for (; i < n; ++i) out[i] = std::max(x_old[i] + step * d[i], lower);
     });
@@ -250,7 +252,7 @@ inline LbfgsbFloor lbfgsb_floor_once(const std::vector<double> &pressure,
       const Pair delta = splat(0.125), half_pair = splat(0.5), zero = splat(0.0);
       Pair value = zero, residual = zero;
       std::int64_t i = 0;
-      for (; i + 2 <= n; i += 2) {
+      for (; i + lanes <= n; i += lanes) {
         const Pair ui = load(&u[i]), hi = load(&h[i]), xi = load(&x[i]);
         const Pair gi = ui - hi - delta;
         store(&g[i], gi);
@@ -259,7 +261,7 @@ inline LbfgsbFloor lbfgsb_floor_once(const std::vector<double> &pressure,
         const Pair magnitude = larger(gi, -gi);
         residual = larger(residual, select(xi > zero, magnitude, larger(-gi, zero)));
       }
-      sink += value[0] + value[1] + std::max(residual[0], residual[1]) + spectrum[1].real();
+      sink += asp::lanes::lane_sum(value) + asp::lanes::lane_max(residual) + spectrum[1].real();
     });
   }
   if (sink == -1.0) std::printf(" ");

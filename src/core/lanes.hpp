@@ -16,31 +16,32 @@
 #pragma once
 
 #include <cstring>
-#include <limits>
 
 namespace asp {
 namespace lanes {
 
+// GCC and Clang (and the compilers that take their extensions) give two lanes; any other
+// C++17 compiler runs the same kernels on one, as scalar loops.
+#if defined(__GNUC__)
 typedef double Pair __attribute__((vector_size(16)));
+#else
+using Pair = double;
+#endif
 
 template <class V>
-constexpr int width = 1;
-template <>
-constexpr int width<Pair> = 2;
+constexpr int width = static_cast<int>(sizeof(V) / sizeof(double));
 
 template <class V>
 V load(const double *p) {
-  if constexpr (width<V> == 1) {
-    return *p;
-  } else {
-    V v;
-    std::memcpy(&v, p, sizeof v);
-    return v;
-  }
+  V v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
 }
 
-inline void store(double *p, double v) { *p = v; }
-inline void store(double *p, Pair v) { std::memcpy(p, &v, sizeof v); }
+template <class V>
+void store(double *p, V v) {
+  std::memcpy(p, &v, sizeof v);
+}
 
 template <class V>
 V splat(double a) {
@@ -52,10 +53,20 @@ V splat(double a) {
 
 // The lanes' sum and largest value (a NaN lane may be dropped from the latter, as by the
 // loops' maxima).
-inline double lane_sum(double v) { return v; }
-inline double lane_sum(Pair v) { return v[0] + v[1]; }
-inline double lane_max(double v) { return v; }
-inline double lane_max(Pair v) { return v[1] > v[0] ? v[1] : v[0]; }
+template <class V>
+double lane_sum(V v) {
+  if constexpr (width<V> == 1)
+    return v;
+  else
+    return v[0] + v[1];
+}
+template <class V>
+double lane_max(V v) {
+  if constexpr (width<V> == 1)
+    return v;
+  else
+    return v[1] > v[0] ? v[1] : v[0];
+}
 
 }  // namespace lanes
 }  // namespace asp

@@ -269,15 +269,18 @@ template <class Body>
 void for_each_in_lanes(std::int64_t n, Body &&body) {
   in_pieces(n, chunk_entries, threads_for(n), [&](std::int64_t begin, std::int64_t end) {
     auto kernel = body;  // a copy per piece, as in sums_and_max
+    constexpr int width = lanes::width<lanes::Pair>;
     std::int64_t i = begin;
-    for (; i + 2 <= end; i += 2) kernel(i, lanes::Pair{});
-    if (i < end) kernel(i, 0.0);
+    for (; i + width <= end; i += width) kernel(i, lanes::Pair{});
+    if constexpr (width > 1)
+      if (i < end) kernel(i, 0.0);
   });
 }
 
 // sums_and_maxima for a kernel written for both value types of core/lanes.hpp:
 // body(i, sum, max), with sum and max arrays of lanes::Pair, handles the entries i and i + 1;
-// with arrays of double, entry i alone (the last entry of a chunk of odd length). Each chunk
+// with arrays of double, entry i alone (the last entry of a chunk of odd length; every entry
+// where Pair is a double). Each chunk
 // adds up its two lanes at its end, so that the results still depend on n alone.
 template <int K, int M, class Body>
 std::pair<std::array<double, K>, std::array<double, M>> sums_and_maxima_in_lanes(
@@ -295,11 +298,13 @@ std::pair<std::array<double, K>, std::array<double, M>> sums_and_maxima_in_lanes
         for (int m = 0; m < M; ++m) max[m] = lanes::splat<Pair>(none);
         // A copy of the kernel per piece, as in sums_and_max.
         auto kernel = body;
+        constexpr int width = lanes::width<Pair>;
         std::int64_t i = begin;
-        for (; i + 2 <= end; i += 2) kernel(i, sum, max);
+        for (; i + width <= end; i += width) kernel(i, sum, max);
         double last_sum[K] = {}, last_max[M];
         for (int m = 0; m < M; ++m) last_max[m] = none;
-        if (i < end) kernel(i, last_sum, last_max);
+        if constexpr (width > 1)
+          if (i < end) kernel(i, last_sum, last_max);
         for (int k = 0; k < K; ++k) part.first[k] = lanes::lane_sum(sum[k]) + last_sum[k];
         for (int m = 0; m < M; ++m) {
           const double lane = lanes::lane_max(max[m]);

@@ -124,10 +124,10 @@ CauchyPoint generalized_cauchy_point(const double *x, const double *g, std::int6
   // f' = g.d and p = W^T d. One pass counts the unknowns the bound holds, sums the slope,
   // lists the unknowns off the bound (or those on it, if fewer), for the sums over the free
   // set, and collects the breakpoints t_i = (x_i - lower)/g_i (below), which then go into a
-  // heap, smallest first. Which of
-  // the two sets to list is known only after the count: the pass lists the one the last
-  // call listed, and a second pass lists the other if that guess was wrong (or if there was
-  // no last call: a first guess would be wrong half the time, and on a large set). The pass
+  // heap, smallest first. Which of the two sets to list is known only after the count: the
+  // pass lists the one the last call listed, and a second pass lists the other if that guess
+  // was wrong (or if there was no last call: a first guess would be wrong half the time, and
+  // on a large set). The pass
   // is serial, as its lists are; its sums, chunk by chunk as the loops' (for their
   // rounding), do not depend on the thread count. The entries of the lists go first to
   // small buffers, written without a branch or a call (which would send the sums to memory
@@ -152,6 +152,8 @@ CauchyPoint generalized_cauchy_point(const double *x, const double *g, std::int6
     return gi > 0.0 && xi > bi && std::isfinite(t);
   };
   const bool breakpoints_in_pass = !(listing_now && !list_held);
+  // The pass is a template on whether it collects them, so that its loop carries no test of
+  // that.
   constexpr std::int64_t buffered = 512;
   std::int64_t listed_buffer[buffered];
   Breakpoint breakpoint_buffer[buffered];

@@ -43,10 +43,12 @@ struct Bound {
 inline bool at_bound(double x, double g, double lower, double t) {
   return g > 0.0 && x - lower <= t * g;
 }
+#if defined(__GNUC__)
 // The same test on two entries: a mask.
 inline auto at_bound(lanes::Pair x, lanes::Pair g, lanes::Pair lower, double t) {
   return (g > 0.0) & (x - lower <= t * g);
 }
+#endif
 
 // Whether a set of about `size` of `total` unknowns (over all processes) is better listed by
 // its complement: the same choice on every process, from global counts.

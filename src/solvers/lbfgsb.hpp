@@ -18,8 +18,10 @@ namespace asp {
 
 AlgorithmSpec lbfgsb_algorithm();
 
-// The algorithm on any formulation without a mean-value constraint, keeping at most `memory`
-// pairs; leaves its last iterate in f.variable() (open for tests on small problems).
+// The algorithm on any formulation without a mean-value constraint whose error is the
+// bound's residual (Formulation::error's contract), keeping at most `memory` pairs; leaves
+// its last iterate in f.variable() (open for tests on small problems). After iteration 0 it
+// gathers that residual in its own pass rather than calling f.error.
 void lbfgsb(Formulation &f, Monitor &monitor, int memory);
 
 }  // namespace asp

@@ -270,6 +270,26 @@ TEST(Lbfgsb, SolvesASmallQuadraticExactly) {
   }
 }
 
+// The monitor's error after iteration 0 is gathered in the line search's pass for the slope;
+// it must be the formulation's own error at the accepted point, to the bit. Checked at the
+// last iterate of solves that stop short of convergence, mid-way.
+TEST(Lbfgsb, ItsErrorIsTheFormulationsAtTheAcceptedPoint) {
+  for (int iterations : {1, 2, 3}) {
+    SmallQuadratic f({4.0, 1.0, 0.5, 1.0, 3.0, 0.2, 0.5, 0.2, 2.0}, {-1.0, 0.5, -2.0},
+                     {1.0, 1.0, 1.0});
+    asp::MonitorSettings settings;
+    settings.tolerance = 1e-15;
+    settings.max_iterations = iterations;
+    asp::Monitor monitor(settings);
+    asp::lbfgsb(f, monitor, 5);
+    ASSERT_EQ(monitor.iterations(), iterations);
+    std::vector<double> g(3);
+    f.value_and_gradient(f.variable().data(), g.data());
+    EXPECT_EQ(monitor.error(), f.error(f.variable().data(), g.data())) << iterations;
+    EXPECT_GT(monitor.error(), 0.0) << iterations;
+  }
+}
+
 // The generalized Cauchy point against a direct computation: B built by the BFGS recursion
 // from theta I with the same pairs (not the compact form), the model minimised exactly on
 // each segment of the projected path in turn. The first local minimiser t must agree to
@@ -393,6 +413,48 @@ TEST(Lbfgsb, GeneralizedCauchyPointIsTheFirstMinimiserAlongThePath) {
         EXPECT_NEAR(cauchy.free_gram[r * k2 + c], gram[c], 1e-14 * gram_size[c])
             << pairs << " pairs, entry " << r << ", " << c;
     }
+  }
+}
+
+// The Cauchy point lists the set the last call listed, and lists again if that guess was
+// wrong; when it lists the free set, the breakpoints come from the list. Whatever the guess,
+// the point and its sums are the same bits as a first call's: with few free unknowns (the
+// free set listed) and with many (the set on the bound listed).
+TEST(Lbfgsb, CauchyPointIsTheSameWhicheverSetTheLastCallListed) {
+  const int n = 6;
+  const asp::LocalReductions reductions;
+  const std::vector<double> g = {1.0, 0.9, 0.8, -0.4, 1.5, 0.2};
+  for (const std::vector<double> &x : {std::vector<double>{0.0, 0.0, 0.0, 0.05, 0.2, 0.0},
+                                       std::vector<double>{0.0, 0.03, 0.1, 0.05, 0.2, 0.06}}) {
+    asp::CompactBfgs bfgs(n, 3, reductions);
+    for (int k = 0; k < 3; ++k) {
+      std::vector<double> sk(n), yk(n);
+      for (int i = 0; i < n; ++i) {
+        sk[i] = std::sin(1.0 + i + 3.0 * k);
+        yk[i] = (1.0 + i) * sk[i] + 0.3 * ((i > 0 ? sk[i - 1] : 0.0) + (i < n - 1 ? sk[i + 1] : 0.0));
+      }
+      asp::Field x_old(n, 0.0), g_old(n);
+      for (int i = 0; i < n; ++i) g_old[i] = g[i] - yk[i];
+      ASSERT_TRUE(bfgs.add_pair(sk.data(), x_old, g.data(), g_old));
+    }
+    asp::CauchyWork first;
+    const asp::CauchyPoint expected =
+        asp::generalized_cauchy_point(x.data(), g.data(), n, n, 0.0, bfgs, reductions, first);
+    using Listed = asp::CauchyWork::Listed;
+    for (const Listed guess : {Listed::free, Listed::on_bound}) {
+      asp::CauchyWork work;
+      work.last_listed = guess;
+      const asp::CauchyPoint cauchy =
+          asp::generalized_cauchy_point(x.data(), g.data(), n, n, 0.0, bfgs, reductions, work);
+      EXPECT_EQ(cauchy.t, expected.t);
+      EXPECT_EQ(cauchy.at_bound, expected.at_bound);
+      EXPECT_EQ(cauchy.listed_free, expected.listed_free);
+      EXPECT_EQ(cauchy.c, expected.c);
+      EXPECT_EQ(cauchy.free_gradient, expected.free_gradient);
+      EXPECT_EQ(cauchy.free_gram, expected.free_gram);
+      EXPECT_EQ(work.last_listed, first.last_listed);
+    }
+    EXPECT_GT(expected.t, 0.0);
   }
 }
 
