@@ -232,18 +232,39 @@ void select(std::int64_t n, Keep &&keep, Indices &out) {
     if (keep(i)) out.push_back(i);
 }
 
+// K sums and M maxima, as sums_and_maxima and sums_and_maxima_in_lanes return them.
+template <int K, int M>
+using SumsAndMaxima = std::pair<std::array<double, K>, std::array<double, M>>;
+
+// The chunks' sums and maxima, each chunk's from reduce(begin, end, part), folded in chunk
+// order and combined across the grid's parts. The maximum of no value is -infinity.
+template <int K, int M, class Reduce>
+SumsAndMaxima<K, M> reduce_sums_and_maxima(const Reductions &reductions, std::int64_t n,
+                                           Reduce &&reduce) {
+  using Result = SumsAndMaxima<K, M>;
+  Result initial{};
+  initial.second.fill(-std::numeric_limits<double>::infinity());
+  Result out = reduce_in_parts(n, initial, std::forward<Reduce>(reduce),
+                               [](Result &total, const Result &part) {
+                                 for (int k = 0; k < K; ++k) total.first[k] += part.first[k];
+                                 for (int m = 0; m < M; ++m)
+                                   total.second[m] = part.second[m] > total.second[m]
+                                                         ? part.second[m]
+                                                         : total.second[m];
+                               });
+  reductions.combine_sums(out.first.data(), K);
+  reductions.combine_maxima(out.second.data(), M);
+  return out;
+}
+
 // K sums and M maxima: body(i, sum, max) adds to sum[0..K-1] and raises max[0..M-1]. The
 // maximum of an empty range is -infinity; as for sums_and_max, a NaN offered to a maximum may
 // be dropped.
 template <int K, int M, class Body>
-std::pair<std::array<double, K>, std::array<double, M>> sums_and_maxima(
-    const Reductions &reductions, std::int64_t n, Body &&body) {
-  using Result = std::pair<std::array<double, K>, std::array<double, M>>;
-  Result initial{};
-  initial.second.fill(-std::numeric_limits<double>::infinity());
-  Result out = reduce_in_parts(
-      n, initial,
-      [&](std::int64_t begin, std::int64_t end, Result &part) {
+SumsAndMaxima<K, M> sums_and_maxima(const Reductions &reductions, std::int64_t n,
+                                    Body &&body) {
+  return reduce_sums_and_maxima<K, M>(
+      reductions, n, [&](std::int64_t begin, std::int64_t end, SumsAndMaxima<K, M> &part) {
         double sum[K] = {};
         double max[M];
         for (int m = 0; m < M; ++m) max[m] = -std::numeric_limits<double>::infinity();
@@ -251,15 +272,7 @@ std::pair<std::array<double, K>, std::array<double, M>> sums_and_maxima(
         for (std::int64_t i = begin; i < end; ++i) body(i, sum, max);
         for (int k = 0; k < K; ++k) part.first[k] = sum[k];
         for (int m = 0; m < M; ++m) part.second[m] = none_if_lowest(max[m]);
-      },
-      [](Result &total, const Result &part) {
-        for (int k = 0; k < K; ++k) total.first[k] += part.first[k];
-        for (int m = 0; m < M; ++m)
-          total.second[m] = part.second[m] > total.second[m] ? part.second[m] : total.second[m];
       });
-  reductions.combine_sums(out.first.data(), K);
-  reductions.combine_maxima(out.second.data(), M);
-  return out;
 }
 
 // for_each for a kernel written for both value types of core/lanes.hpp: body(i, V{})
@@ -280,19 +293,15 @@ void for_each_in_lanes(std::int64_t n, Body &&body) {
 // sums_and_maxima for a kernel written for both value types of core/lanes.hpp:
 // body(i, sum, max), with sum and max arrays of lanes::Pair, handles the entries i and i + 1;
 // with arrays of double, entry i alone (the last entry of a chunk of odd length; every entry
-// where Pair is a double). Each chunk
-// adds up its two lanes at its end, so that the results still depend on n alone.
+// where Pair is a double). Each chunk adds up its two lanes at its end, so that the results
+// still depend on n alone.
 template <int K, int M, class Body>
-std::pair<std::array<double, K>, std::array<double, M>> sums_and_maxima_in_lanes(
-    const Reductions &reductions, std::int64_t n, Body &&body) {
-  using Result = std::pair<std::array<double, K>, std::array<double, M>>;
+SumsAndMaxima<K, M> sums_and_maxima_in_lanes(const Reductions &reductions, std::int64_t n,
+                                             Body &&body) {
   using lanes::Pair;
   constexpr double none = -std::numeric_limits<double>::infinity();
-  Result initial{};
-  initial.second.fill(none);
-  Result out = reduce_in_parts(
-      n, initial,
-      [&](std::int64_t begin, std::int64_t end, Result &part) {
+  return reduce_sums_and_maxima<K, M>(
+      reductions, n, [&](std::int64_t begin, std::int64_t end, SumsAndMaxima<K, M> &part) {
         Pair sum[K], max[M];
         for (int k = 0; k < K; ++k) sum[k] = lanes::splat<Pair>(0.0);
         for (int m = 0; m < M; ++m) max[m] = lanes::splat<Pair>(none);
@@ -310,15 +319,7 @@ std::pair<std::array<double, K>, std::array<double, M>> sums_and_maxima_in_lanes
           const double lane = lanes::lane_max(max[m]);
           part.second[m] = last_max[m] > lane ? last_max[m] : lane;
         }
-      },
-      [](Result &total, const Result &part) {
-        for (int k = 0; k < K; ++k) total.first[k] += part.first[k];
-        for (int m = 0; m < M; ++m)
-          total.second[m] = part.second[m] > total.second[m] ? part.second[m] : total.second[m];
       });
-  reductions.combine_sums(out.first.data(), K);
-  reductions.combine_maxima(out.second.data(), M);
-  return out;
 }
 
 }  // namespace loops

@@ -36,8 +36,10 @@ void sums_over_list(const Indices &list, bool complement, const double *g,
                     [&](std::int64_t begin, std::int64_t end, double *sum) {
                       const std::int64_t length = end - begin;
                       const std::int64_t *at = list.data() + begin;
+                      // The rows and g at the block (unless kept), then the products of
+                      // one row with the others.
                       std::vector<double> scratch(
-                          static_cast<std::size_t>((kept != nullptr ? 1 : k2 + 1) * block));
+                          static_cast<std::size_t>((kept != nullptr ? 1 : k2 + 1) * block + k2));
                       double *rows = kept != nullptr ? kept + begin * k2 : scratch.data();
                       double *gl = scratch.data() + (kept != nullptr ? 0 : k2 * block);
                       // A kept block's columns lie at its own length apart.
@@ -80,8 +82,7 @@ void sums_over_list(const Indices &list, bool complement, const double *g,
                         for (; c + 4 <= k2; c += 4) four_dots(a, row(c), out + (c - first));
                         for (; c < k2; ++c) out[c - first] = dot_block(a, row(c));
                       };
-                      std::vector<double> products(static_cast<std::size_t>(k2));
-                      double *dots = products.data();
+                      double *dots = scratch.data() + scratch.size() - k2;
                       products_with(gl, 0, dots);
                       for (int j = 0; j < k2; ++j) sum[j] += bfgs.scale(j) * dots[j];
                       for (int r = 0; r < k2; ++r) {

@@ -347,6 +347,30 @@ double direct_cauchy_t(const std::vector<double> &x, const std::vector<double> &
   return t;
 }
 
+// `pairs` pairs from a convex quadratic entered into bfgs (so that s.y > 0), with g the
+// gradient whose products with them the Cauchy point uses; the pairs also go to s and y.
+// Returns whether every pair entered.
+bool add_quadratic_pairs(asp::CompactBfgs &bfgs, const std::vector<double> &g, int pairs,
+                         std::vector<std::vector<double>> &s,
+                         std::vector<std::vector<double>> &y) {
+  const int n = static_cast<int>(g.size());
+  for (int k = 0; k < pairs; ++k) {
+    std::vector<double> sk(n), yk(n);
+    for (int i = 0; i < n; ++i) {
+      sk[i] = std::sin(1.0 + i + 3.0 * k);
+      // y = H s with H = diag(1 + i) plus a coupling of neighbours: positive definite.
+      yk[i] = (1.0 + i) * sk[i] + 0.3 * ((i > 0 ? sk[i - 1] : 0.0) + (i < n - 1 ? sk[i + 1] : 0.0));
+    }
+    // add_pair takes x, x_old, g, g_old: the differences are the pair.
+    asp::Field x_old(n, 0.0), g_old(n);
+    for (int i = 0; i < n; ++i) g_old[i] = g[i] - yk[i];
+    if (!bfgs.add_pair(sk.data(), x_old, g.data(), g_old)) return false;
+    s.push_back(sk);
+    y.push_back(yk);
+  }
+  return true;
+}
+
 TEST(Lbfgsb, GeneralizedCauchyPointIsTheFirstMinimiserAlongThePath) {
   const int n = 6;
   const asp::LocalReductions reductions;
@@ -357,21 +381,7 @@ TEST(Lbfgsb, GeneralizedCauchyPointIsTheFirstMinimiserAlongThePath) {
   for (int pairs : {0, 1, 3}) {
     asp::CompactBfgs bfgs(n, 3, reductions);
     std::vector<std::vector<double>> s, y;
-    for (int k = 0; k < pairs; ++k) {
-      std::vector<double> sk(n), yk(n);
-      for (int i = 0; i < n; ++i) {
-        sk[i] = std::sin(1.0 + i + 3.0 * k);
-        // y = H s with H = diag(1 + i) plus a coupling of neighbours: positive definite.
-        yk[i] = (1.0 + i) * sk[i] + 0.3 * ((i > 0 ? sk[i - 1] : 0.0) + (i < n - 1 ? sk[i + 1] : 0.0));
-      }
-      // add_pair takes x, x_old, g, g_old: the differences are the pair, and g is the
-      // gradient whose products with the pairs the Cauchy point will use.
-      asp::Field x_old(n, 0.0), g_old(n);
-      for (int i = 0; i < n; ++i) g_old[i] = g[i] - yk[i];
-      ASSERT_TRUE(bfgs.add_pair(sk.data(), x_old, g.data(), g_old));
-      s.push_back(sk);
-      y.push_back(yk);
-    }
+    ASSERT_TRUE(add_quadratic_pairs(bfgs, g, pairs, s, y));
     asp::CauchyWork work;
     const asp::CauchyPoint cauchy =
         asp::generalized_cauchy_point(x.data(), g.data(), n, n, 0.0, bfgs, reductions, work);
@@ -427,16 +437,8 @@ TEST(Lbfgsb, CauchyPointIsTheSameWhicheverSetTheLastCallListed) {
   for (const std::vector<double> &x : {std::vector<double>{0.0, 0.0, 0.0, 0.05, 0.2, 0.0},
                                        std::vector<double>{0.0, 0.03, 0.1, 0.05, 0.2, 0.06}}) {
     asp::CompactBfgs bfgs(n, 3, reductions);
-    for (int k = 0; k < 3; ++k) {
-      std::vector<double> sk(n), yk(n);
-      for (int i = 0; i < n; ++i) {
-        sk[i] = std::sin(1.0 + i + 3.0 * k);
-        yk[i] = (1.0 + i) * sk[i] + 0.3 * ((i > 0 ? sk[i - 1] : 0.0) + (i < n - 1 ? sk[i + 1] : 0.0));
-      }
-      asp::Field x_old(n, 0.0), g_old(n);
-      for (int i = 0; i < n; ++i) g_old[i] = g[i] - yk[i];
-      ASSERT_TRUE(bfgs.add_pair(sk.data(), x_old, g.data(), g_old));
-    }
+    std::vector<std::vector<double>> s, y;
+    ASSERT_TRUE(add_quadratic_pairs(bfgs, g, 3, s, y));
     asp::CauchyWork first;
     const asp::CauchyPoint expected =
         asp::generalized_cauchy_point(x.data(), g.data(), n, n, 0.0, bfgs, reductions, first);
