@@ -19,9 +19,7 @@ constexpr double rise_resolved = 1e-6;
 
 double automatic_time_step(Formulation &f) {
   const double curvature = f.largest_curvature();
-  if (!(curvature > 0.0) || !std::isfinite(curvature))
-    throw Error(Status::internal, "the formulation bounds no curvature for a time step");
-  return 1.0 / std::sqrt(curvature);
+  return curvature > 0.0 && std::isfinite(curvature) ? 1.0 / std::sqrt(curvature) : 0.0;
 }
 
 void fire(Formulation &f, Monitor &monitor, const FireParameters &parameters) {
@@ -31,7 +29,16 @@ void fire(Formulation &f, Monitor &monitor, const FireParameters &parameters) {
   Field force(static_cast<std::size_t>(n)), velocity(static_cast<std::size_t>(n), 0.0);
   double *F = force.data(), *v = velocity.data();
 
+  // The gradient is the negative force; the solver keeps the gradient and flips signs.
+  double value = f.value_and_gradient(x, F);
+  if (monitor.should_stop(0, observe(f, x, F, value, monitor))) return;
+
   double dt = parameters.time_step > 0.0 ? parameters.time_step : automatic_time_step(f);
+  if (dt == 0.0) {
+    // A curvature that overflows (a wall whose stiffness is not a double) allows no step.
+    monitor.declare_breakdown();
+    return;
+  }
   // Bitzek et al.'s largest step is ten times a stable molecular-dynamics step; the step the
   // elastic modes alone allow is taken as that, not the first step, which a start deep inside
   // a stiff wall can make orders of magnitude smaller.
@@ -41,9 +48,6 @@ void fire(Formulation &f, Monitor &monitor, const FireParameters &parameters) {
   double alpha = parameters.mixing;
   int positive_steps = 0;
 
-  // The gradient is the negative force; the solver keeps the gradient and flips signs.
-  double value = f.value_and_gradient(x, F);
-  if (monitor.should_stop(0, observe(f, x, F, value, monitor))) return;
   double previous_value = value;  // before the last step
   double last_step = 0.0;         // the time step of the last move, x += last_step v
   for (std::int64_t iteration = 1;; ++iteration) {

@@ -35,8 +35,8 @@ void fire(Formulation &f, Monitor &monitor, const FireParameters &parameters);
 
 // The automatic first time step of a dynamics solver: 1/sqrt of an upper bound on the largest
 // curvature, half the stability limit 2/omega of the integrators for the stiffest mode.
-// Throws Error(internal) if the formulation bounds no curvature (every formulation a dynamics
-// solver runs on does).
+// 0 where the bound is not a finite, positive number: a curvature that overflows, at a state
+// inside a wall too stiff for a double, allows no step.
 double automatic_time_step(Formulation &f);
 
 }  // namespace asp

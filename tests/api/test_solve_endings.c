@@ -6,6 +6,10 @@
  *    with a stall window of 2; and "fire" broken down, on a potential whose energy below a
  *    gap of -0.1 is so large that the energy of a few pixels there overflows a double (the
  *    breakdown once left the history a row short);
+ *  - the dynamics solvers ("fire", "fire_mass_weighted", "gfmd") on a soft wall so narrow
+ *    (range 1e-300) that its curvature overflows a double end as broken down, with their
+ *    history of one row, where "fire" once failed with ASP_ERR_INTERNAL for want of a time
+ *    step;
  *  - asp_last_error_message() is empty after a solve that returned ASP_OK, also when the
  *    progress or the potential callback made a call of its own that the library refused (the
  *    message of that call was once left behind). */
@@ -189,6 +193,31 @@ static void test_fire_breakdown(const Scenes *s) {
   asp_system_destroy(system);
 }
 
+/* A soft wall whose curvature 4 gamma_r/rho_r^2 is not a double: no time step is stable. */
+static void test_dynamics_without_a_time_step(const Scenes *s) {
+  static const char *const names[3] = {"fire", "fire_mass_weighted", "gfmd"};
+  asp_system *system = NULL;
+  int k;
+  CHECK_OK(asp_system_create(s->grid, 2.0, &system));
+  CHECK_OK(asp_system_set_topography(system, s->heights, n));
+  CHECK_OK(asp_system_set_soft_wall(system, 0.01, 1e-300, 0.001, 0.02));
+  for (k = 0; k < 3; ++k) {
+    asp_solver *solver = NULL;
+    int reason = 0;
+    char what[64];
+    snprintf(what, sizeof what, "%s, no time step", names[k]);
+    CHECK_OK(asp_solver_create(names[k], &solver));
+    CHECK_OK(asp_solver_set_history(solver, 1));
+    CHECK_OK(asp_system_reset(system));
+    CHECK_OK(asp_solver_solve(solver, system, ASP_CONTROL_MEAN_PRESSURE, 0.91));
+    CHECK_OK(asp_solver_termination(solver, &reason));
+    CHECK(reason == ASP_TERMINATION_BREAKDOWN);
+    CHECK_ROWS(solver, what);
+    asp_solver_destroy(solver);
+  }
+  asp_system_destroy(system);
+}
+
 /* Callbacks that call the library about the system being solved: refused, and the solve goes
  * on. What each refused call said is kept for the checks. */
 typedef struct {
@@ -267,6 +296,7 @@ int main(void) {
   make_scenes(&s);
   test_every_algorithm_every_ending(&s);
   test_fire_breakdown(&s);
+  test_dynamics_without_a_time_step(&s);
   test_message_empty_after_success(&s);
   asp_system_destroy(s.hard);
   asp_system_destroy(s.soft);
