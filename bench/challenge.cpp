@@ -17,9 +17,14 @@
 // and the solve's iterations, time, time per iteration in FFT pairs, error, contact and
 // attractive fractions, the energy, and how it ended.
 //
+// With --range-continuation F the solve is preceded by one of the same scene with the range
+// F rho, to the tolerance 1e-3, from whose state the solve with rho starts; both are printed,
+// and the iterations of the two together.
+//
 // usage: asperity_challenge [--size N] [--threads T] [--algorithm NAME[:VARIABLE]]
 //                           [--penetration D | --mean-gap G] [--tolerance T]
 //                           [--max-iterations K] [--no-pair] [--estimate]
+//                           [--range-continuation F]
 //                           [--option NAME=VALUE]   (an option of the algorithm: a number,
 //                                                    or else a word; repeatable)
 //        (defaults: 16384, the library's default threads, bugnicourt:gap, 1.5e-6 m, 1e-6,
@@ -58,6 +63,7 @@ struct Options {
   double max_iterations = 1e5;
   bool pair = true;
   bool estimate = false;  // FFTW_ESTIMATE plans instead of measured ones
+  double range_factor = 0.0;  // > 0: a first solve with this multiple of the range
   std::vector<std::pair<std::string, std::string>> choices;  // --option NAME=VALUE
 };
 
@@ -128,8 +134,24 @@ int run(const Options &o) {
   asp::reset_field_bytes_peak();
   const std::int64_t before = asp::field_bytes_in_use();
   const bool by_mean_gap = o.mean_gap > 0.0;
-  solver.solve(system, by_mean_gap ? asp::Control::mean_gap : asp::Control::penetration,
-               by_mean_gap ? o.mean_gap : o.penetration);
+  const asp::Control control = by_mean_gap ? asp::Control::mean_gap : asp::Control::penetration;
+  const double target = by_mean_gap ? o.mean_gap : o.penetration;
+  std::int64_t first_iterations = 0;
+  if (o.range_factor > 0.0) {
+    system.set_adhesion(work, o.range_factor * range);
+    solver.set_option("tolerance", 1e-3);
+    solver.solve(system, control, target);
+    const asp::SolveReport &first = solver.report();
+    first_iterations = first.iterations;
+    std::printf("range %.4g nm, tolerance 1e-3: %s after %lld iterations in %.1f s; contact "
+                "%.4f %%\n",
+                1e9 * o.range_factor * range, asp::termination_name(first.termination),
+                static_cast<long long>(first.iterations), first.seconds,
+                100.0 * system.contact_fraction());
+    system.set_adhesion(work, range);
+    solver.set_option("tolerance", o.tolerance);
+  }
+  solver.solve(system, control, target);
   const double solve_bytes = static_cast<double>(asp::field_bytes_peak() - before) / pixels;
 
   const asp::SolveReport &r = solver.report();
@@ -143,6 +165,9 @@ int run(const Options &o) {
               static_cast<long long>(r.transforms), r.seconds, per_iteration);
   if (pair > 0.0) std::printf(" (%.2f FFT pairs)", per_iteration / pair);
   std::printf("; error %.3e\n", r.error);
+  if (o.range_factor > 0.0)
+    std::printf("with the solve at %g rho: %lld iterations\n", o.range_factor,
+                static_cast<long long>(first_iterations + r.iterations));
   std::printf("contact %.4f %%, attractive %.4f %%, mean pressure %.4g kPa, mean gap %.4g nm, "
               "penetration %.4g um\n",
               100.0 * system.contact_fraction(), 100.0 * system.attractive_fraction(),
@@ -165,7 +190,7 @@ int usage(const char *program) {
   std::fprintf(stderr,
                "usage: %s [--size N] [--threads T] [--algorithm NAME[:VARIABLE]] "
                "[--penetration D | --mean-gap G] [--tolerance T] [--max-iterations K] [--no-pair] "
-               "[--estimate] [--option NAME=VALUE]\n",
+               "[--estimate] [--range-continuation F] [--option NAME=VALUE]\n",
                program);
   return 2;
 }
@@ -198,6 +223,9 @@ int main(int argc, char **argv) {
       o.pair = false;
     } else if (arg == "--estimate") {
       o.estimate = true;
+    } else if (arg == "--range-continuation" && has_value) {
+      o.range_factor = std::strtod(argv[++i], nullptr);
+      if (!(o.range_factor > 0.0 && std::isfinite(o.range_factor))) return usage(argv[0]);
     } else if (arg == "--option" && has_value) {
       const std::string choice = argv[++i];
       const std::size_t equals = choice.find('=');
