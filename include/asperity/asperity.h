@@ -730,9 +730,9 @@ typedef struct asp_solver asp_solver;
  *                 the gap or the stiffness on the pressure, applied to the projected
  *                 gradient: the same solution in 2 to 6 times fewer iterations, each costing
  *                 one more FFT pair; 12 more bytes per pixel, 24 on a free substrate),
- *                 "none" (as published), or "auto" (the default): "fourier" without
- *                 adhesion, "none" with it, where the adhesive problem has several stable
- *                 states and the two paths can reach different ones.
+ *                 "none" (as published), or "auto" (the default): "fourier", with or
+ *                 without adhesion (the adhesive problem has several stable states, and
+ *                 the two paths can reach different ones; "none" keeps the published path).
  *                 Faster than "pk" near full contact. Stops as stalled also when it has no
  *                 descent direction left.
  *   "lbfgsb"      Byrd, Lu, Nocedal & Zhu's L-BFGS-B (1995; hard wall, periodic or free
