@@ -138,7 +138,7 @@ void bugnicourt(Formulation &f, Monitor &monitor, bool preconditioned) {
 // the step, and the step taken is 1.5 times the safe one, which the model still guarantees
 // to descend (it descends for every multiple below 2); should a cut make it rise, the safe
 // step is taken instead. On the contact-mechanics challenge's scene at 1024^2 to 4096^2 this
-// cut the iterations 1.5 to 2.5 times. Along the plain gradient it changed little on nested
+// cut the iterations 1.5 to 2.6 times. Along the plain gradient it changed little on nested
 // grids and led one cold solve to a state of much higher energy (docs/performance.md), so
 // there the step stays the safe one. The conjugate direction uses beta = r.Hd / d.Hd (H at
 // the iterate the step started from), restarting where that curvature is not positive.
@@ -313,8 +313,8 @@ Offer offer_for(const OptionValues &options) {
 // 64^2 on. With adhesion the problem has several stable states, and the preconditioned path,
 // whose directions move large parts of the surface at once, can settle in another one than
 // the plain path; on nested grids (the default from 128 pixels a side) it reached states
-// within 1 % of the plain path's energy on the contact-mechanics challenge's scene, in 5 to
-// 7 times fewer iterations (docs/performance.md, "The step along negative curvature").
+// within 1 % of the plain path's energy on the contact-mechanics challenge's scene, in 5.5
+// to 7.3 times fewer iterations (docs/performance.md, "The step along negative curvature").
 bool preconditioned(const OptionValues &options) {
   const std::string &choice = options.text("preconditioner");
   return choice == "fourier" || choice == "auto";
@@ -367,9 +367,9 @@ AlgorithmSpec bugnicourt_algorithm() {
                    "applied to the projected gradient, one more transform pair per iteration "
                    "and 12 more bytes per pixel (its vector, and the substrate's inverse "
                    "operator on the half spectrum; 24 on a free substrate) for iterations "
-                   "that grow far less with the grid; none: the conjugate gradient as published; auto: fourier, "
-                   "with or without adhesion (the adhesive problem has several stable states, "
-                   "and the two paths can reach different ones)"}};
+                   "that grow far less with the grid; none: the conjugate gradient as "
+                   "published; auto: fourier, with or without adhesion (the adhesive problem "
+                   "has several stable states, and the two paths can reach different ones)"}};
   // Nested grids by default: on the bench scene to 1e-8 they take 0.74 to 0.99 times the
   // time of a plain solve from 512^2 to 2048^2 (docs/performance.md, "Nested grids with
   // bugnicourt and lbfgsb"). With adhesion the coarse levels solve the non-adhesive contact
