@@ -325,8 +325,7 @@ void run_on(System &system, Control control, double value, const OptionValues &o
             Monitor &monitor) {
   Variable formulation(system, control, value);
   // Every objective the offer admits is quadratic, or separable (the gap with adhesion).
-  const bool quadratic = formulation.quadratic();
-  if (quadratic)
+  if (formulation.quadratic())
     bugnicourt(formulation, monitor, preconditioned(options));
   else
     bugnicourt_separable(formulation, *formulation.local_term(), monitor,

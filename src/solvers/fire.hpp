@@ -33,8 +33,9 @@ struct FireParameters {
 // Leaves the last iterate in f.variable().
 void fire(Formulation &f, Monitor &monitor, const FireParameters &parameters);
 
-// The automatic first time step of a dynamics solver: 1/sqrt of an upper bound on the largest
-// curvature, half the stability limit 2/omega of the integrators for the stiffest mode.
+// The automatic time step of the dynamics solvers (fire's first step, gfmd's bound at the
+// iterate): 1/sqrt of an upper bound on the largest curvature at f's current state, half the
+// stability limit 2/omega of the integrators for the stiffest mode.
 // 0 where the bound is not a finite, positive number: a curvature that overflows, at a state
 // inside a wall too stiff for a double, allows no step.
 double automatic_time_step(Formulation &f);

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/loops.hpp"
+#include "solvers/fire.hpp"
 #include "solvers/monitor.hpp"
 
 namespace asp {
@@ -41,12 +42,12 @@ void gfmd(Formulation &f, Monitor &monitor, const GfmdParameters &parameters) {
       // the potential cost 2.6 FFT pairs per iteration at 512^2 when taken at every step); a
       // stiffer wall met in between makes the motion unstable, the energy rise, and the
       // motion restart with a new bound.
-      const double curvature = f.largest_curvature();
-      if (!(curvature > 0.0) || !std::isfinite(curvature)) {
+      const double step = automatic_time_step(f);
+      if (step == 0.0) {
         monitor.declare_breakdown();
         return;
       }
-      rule_step = std::min(elastic_step, 1.0 / std::sqrt(curvature));
+      rule_step = std::min(elastic_step, step);
     }
     if (!fixed) dt = rule_step;
     dt *= scale;

@@ -176,20 +176,28 @@ static int cliff(int64_t count, const double *gap, double *phi, double *dphi, do
   return 0;
 }
 
-static void test_fire_breakdown(const Scenes *s) {
-  asp_system *system = NULL;
+/* A cold solve of `name` on `system` under the mean pressure `pressure` that ends broken down,
+ * with the history of its rows. */
+static void expect_breakdown(asp_system *system, const char *name, double pressure,
+                             const char *what) {
   asp_solver *solver = NULL;
   int reason = 0;
+  CHECK_OK(asp_solver_create(name, &solver));
+  CHECK_OK(asp_solver_set_history(solver, 1));
+  CHECK_OK(asp_system_reset(system));
+  CHECK_OK(asp_solver_solve(solver, system, ASP_CONTROL_MEAN_PRESSURE, pressure));
+  CHECK_OK(asp_solver_termination(solver, &reason));
+  CHECK(reason == ASP_TERMINATION_BREAKDOWN);
+  CHECK_ROWS(solver, what);
+  asp_solver_destroy(solver);
+}
+
+static void test_fire_breakdown(const Scenes *s) {
+  asp_system *system = NULL;
   CHECK_OK(asp_system_create(s->grid, 1.0, &system));
   CHECK_OK(asp_system_set_topography(system, s->heights, n));
   CHECK_OK(asp_system_set_potential(system, cliff, NULL, 0));
-  CHECK_OK(asp_solver_create("fire", &solver));
-  CHECK_OK(asp_solver_set_history(solver, 1));
-  CHECK_OK(asp_solver_solve(solver, system, ASP_CONTROL_MEAN_PRESSURE, 0.5));
-  CHECK_OK(asp_solver_termination(solver, &reason));
-  CHECK(reason == ASP_TERMINATION_BREAKDOWN);
-  CHECK_ROWS(solver, "fire, breakdown");
-  asp_solver_destroy(solver);
+  expect_breakdown(system, "fire", 0.5, "fire, breakdown");
   asp_system_destroy(system);
 }
 
@@ -202,18 +210,9 @@ static void test_dynamics_without_a_time_step(const Scenes *s) {
   CHECK_OK(asp_system_set_topography(system, s->heights, n));
   CHECK_OK(asp_system_set_soft_wall(system, 0.01, 1e-300, 0.001, 0.02));
   for (k = 0; k < 3; ++k) {
-    asp_solver *solver = NULL;
-    int reason = 0;
     char what[64];
     snprintf(what, sizeof what, "%s, no time step", names[k]);
-    CHECK_OK(asp_solver_create(names[k], &solver));
-    CHECK_OK(asp_solver_set_history(solver, 1));
-    CHECK_OK(asp_system_reset(system));
-    CHECK_OK(asp_solver_solve(solver, system, ASP_CONTROL_MEAN_PRESSURE, 0.91));
-    CHECK_OK(asp_solver_termination(solver, &reason));
-    CHECK(reason == ASP_TERMINATION_BREAKDOWN);
-    CHECK_ROWS(solver, what);
-    asp_solver_destroy(solver);
+    expect_breakdown(system, names[k], 0.91, what);
   }
   asp_system_destroy(system);
 }
