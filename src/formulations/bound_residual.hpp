@@ -44,7 +44,7 @@ constexpr int bound_residual_maxima = 2;
 template <class V>
 inline void gather_bound_residual(V x, V gradient, V lower, V *maxima, V &finite_check) {
   const V g = gradient;
-  maxima[0] = (x > lower) & (g > maxima[0]) ? g : maxima[0];
+  maxima[0] = ((x > lower) & (g > maxima[0])) ? g : maxima[0];
   maxima[1] = -g > maxima[1] ? -g : maxima[1];
   finite_check += g - g;
 }
