@@ -2,11 +2,11 @@
 // The contact-mechanics challenge's scene (Müser et al., Tribol. Lett. 65, 118 (2017)) at a
 // chosen resolution (not a test): a periodic self-affine surface on a 100 um box, Hurst 0.8,
 // roll-off at 20 um, short cutoff 0.1 um, rms slope 1 (seed 1); E* = 25 MPa; the hard wall
-// with exponential adhesion, w = 50 mJ/m^2, rho = 2.071 nm. The generator keys its modes by
-// the wavevector, so every size above 1000^2 (where the short cutoff lies above the Nyquist
-// wavelength) holds the same modes, up to the factor that gives the rms slope on that grid
-// (rms heights 0.73 um at 2048^2, 0.79 um at 4096^2); the challenge's resolution is 16384^2
-// or more, where rho is a third of a pixel.
+// with exponential adhesion, w = 50 mJ/m^2, rho = 2.071 nm. The surface is the same at every
+// size from 2048^2 on (drawn on 2048^2, which holds all its modes, and resampled:
+// challenge_scene.hpp; rms height 0.731 um), and on smaller grids its modes below their
+// Nyquist wavevector; the challenge's resolution is 16384^2 or more, where rho is a third of a
+// pixel.
 //
 // Solved under penetration control (default 1.5 um, a few percent of repulsive contact at
 // 2048^2 to 8192^2), or under mean-gap control with --mean-gap (1.2 um gives 2 to 3 percent),
@@ -21,36 +21,46 @@
 // F rho, to the tolerance 1e-3, from whose state the solve with rho starts; both are printed,
 // and the iterations of the two together.
 //
+// With --settling K,K,... the scene is solved again from rest after the solve, once for each
+// K, stopped after K iterations, and the contact set there is compared with the converged
+// one's: the pixels on the wall in one and not in the other, how far (in pixels, the
+// chessboard distance on the periodic grid) the converged state's missing ones lie from the
+// nearest pixel on the wall at K, and the median gap of the missing ones in units of rho.
+// It shows how the contact set settles during a solve.
+//
 // usage: asperity_challenge [--size N] [--threads T] [--algorithm NAME[:VARIABLE]]
 //                           [--penetration D | --mean-gap G] [--tolerance T]
 //                           [--max-iterations K] [--no-pair] [--estimate]
-//                           [--range-continuation F]
+//                           [--range-continuation F] [--settling K,K,...]
 //                           [--option NAME=VALUE]   (an option of the algorithm: a number,
 //                                                    or else a word; repeatable)
 //        (defaults: 16384, the library's default threads, bugnicourt:gap, 1.5e-6 m, 1e-6,
 //         100000, measured FFT plans (--estimate: FFTW_ESTIMATE, which saves the planning,
 //         about 40 s at 16384^2, for a pair 1.6 times slower there))
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <deque>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "bench/bench_common.hpp"
+#include "bench/challenge_scene.hpp"
 #include "core/aligned_field.hpp"
 #include "core/error.hpp"
 #include "physics/surface_statistics.hpp"
 #include "physics/system.hpp"
-#include "physics/topography.hpp"
 #include "solvers/solver.hpp"
 
 namespace {
 
-constexpr double box = 100e-6, modulus = 25e6, work = 0.05, range = 2.071e-9;
+constexpr double box = bench::challenge_box, modulus = 25e6, work = 0.05, range = 2.071e-9;
 
 struct Options {
   long size = 16384;
@@ -65,7 +75,77 @@ struct Options {
   bool estimate = false;  // FFTW_ESTIMATE plans instead of measured ones
   double range_factor = 0.0;  // > 0: a first solve with this multiple of the range
   std::vector<std::pair<std::string, std::string>> choices;  // --option NAME=VALUE
+  std::vector<double> settling;  // --settling: the iteration counts to compare at
 };
+
+// The pixels on the wall (g = 0) of the system's state.
+std::vector<char> wall_pixels(const asp::System &system) {
+  const asp::Field &gap = system.state().gap;
+  std::vector<char> on(gap.size());
+  for (std::size_t i = 0; i < on.size(); ++i) on[i] = gap[i] == 0.0;
+  return on;
+}
+
+// Every pixel's chessboard distance to the nearest pixel of `set` on the periodic n x n grid
+// (-1 where the set is empty), by a breadth-first search from all of the set at once.
+std::vector<int> distance_to(const std::vector<char> &set, long n) {
+  std::vector<int> distance(set.size(), -1);
+  std::deque<long> front;
+  for (long i = 0; i < static_cast<long>(set.size()); ++i)
+    if (set[static_cast<std::size_t>(i)]) {
+      distance[static_cast<std::size_t>(i)] = 0;
+      front.push_back(i);
+    }
+  while (!front.empty()) {
+    const long i = front.front();
+    front.pop_front();
+    const long x = i / n, y = i % n;
+    for (long dx = -1; dx <= 1; ++dx)
+      for (long dy = -1; dy <= 1; ++dy) {
+        const auto j = static_cast<std::size_t>(((x + dx + n) % n) * n + (y + dy + n) % n);
+        if (distance[j] < 0) {
+          distance[j] = distance[static_cast<std::size_t>(i)] + 1;
+          front.push_back(static_cast<long>(j));
+        }
+      }
+  }
+  return distance;
+}
+
+// --settling: the converged contact set against those of solves stopped early.
+void report_settling(const Options &o, asp::Solver &solver, asp::System &system,
+                     asp::Control control, double target) {
+  const std::vector<char> converged = wall_pixels(system);
+  std::printf("settling of the contact set (%ld pixels on the wall when converged):\n",
+              static_cast<long>(std::count(converged.begin(), converged.end(), 1)));
+  for (const double iterations : o.settling) {
+    system.reset_state();
+    solver.set_option("max_iterations", iterations);
+    solver.solve(system, control, target);
+    const std::vector<char> early = wall_pixels(system);
+    const std::vector<int> distance = distance_to(early, o.size);
+    long missing = 0, extra = 0;
+    int farthest = 0;
+    std::vector<double> gaps;
+    for (std::size_t i = 0; i < early.size(); ++i) {
+      if (converged[i] && !early[i]) {
+        ++missing;
+        farthest = std::max(farthest, distance[i]);
+        gaps.push_back(system.state().gap[i] / range);
+      }
+      if (early[i] && !converged[i]) ++extra;
+    }
+    double median = 0.0;
+    if (!gaps.empty()) {
+      std::nth_element(gaps.begin(), gaps.begin() + gaps.size() / 2, gaps.end());
+      median = gaps[gaps.size() / 2];
+    }
+    std::printf("  after %5.0f iterations: %ld missing (farthest %d px from the wall, median "
+                "gap %.2f rho), %ld extra\n",
+                iterations, missing, farthest, median, extra);
+    std::fflush(stdout);
+  }
+}
 
 // A line a minute, so that an hour-long solve shows where it is.
 struct Progress {
@@ -87,21 +167,13 @@ int run(const Options &o) {
   auto grid = asp::Grid::create(2, o.size, o.size, box, box);
   if (o.threads > 0) grid->set_threads(o.threads);
   if (o.estimate) grid->set_fft_planning(asp::FftPlanning::estimate);
-  asp::SelfAffineParameters params;
-  params.hurst = 0.8;
-  params.long_cutoff = box;
-  params.rolloff = 20e-6;
-  params.short_cutoff = 0.1e-6;
-  params.norm = asp::RoughnessNorm::rms_slope;
-  params.target = 1.0;
-  params.seed = 1;
 
   const auto start = std::chrono::steady_clock::now();
   const std::int64_t empty = asp::field_bytes_in_use();
   asp::System system(grid, modulus);
   {
     std::vector<double> heights(static_cast<std::size_t>(grid->n_pixels()));
-    asp::self_affine_topography(*grid, params, heights.data());
+    bench::challenge_heights(*grid, heights.data());
     system.set_topography(heights.data());
   }
   system.set_adhesion(work, range);
@@ -183,6 +255,7 @@ int run(const Options &o) {
               system_bytes, solve_bytes, system_bytes + solve_bytes,
               (system_bytes + solve_bytes) * pixels / (1024.0 * 1024.0 * 1024.0),
               bench::peak_resident_bytes() / (1024.0 * 1024.0 * 1024.0));
+  if (!o.settling.empty()) report_settling(o, solver, system, control, target);
   return 0;
 }
 
@@ -190,7 +263,8 @@ int usage(const char *program) {
   std::fprintf(stderr,
                "usage: %s [--size N] [--threads T] [--algorithm NAME[:VARIABLE]] "
                "[--penetration D | --mean-gap G] [--tolerance T] [--max-iterations K] [--no-pair] "
-               "[--estimate] [--range-continuation F] [--option NAME=VALUE]\n",
+               "[--estimate] [--range-continuation F] [--settling K,K,...] "
+               "[--option NAME=VALUE]\n",
                program);
   return 2;
 }
@@ -226,6 +300,13 @@ int main(int argc, char **argv) {
     } else if (arg == "--range-continuation" && has_value) {
       o.range_factor = std::strtod(argv[++i], nullptr);
       if (!(o.range_factor > 0.0 && std::isfinite(o.range_factor))) return usage(argv[0]);
+    } else if (arg == "--settling" && has_value) {
+      std::stringstream list(argv[++i]);
+      for (std::string count; std::getline(list, count, ',');) {
+        const double iterations = std::strtod(count.c_str(), nullptr);
+        if (!(iterations >= 1.0 && iterations <= 1e9)) return usage(argv[0]);
+        o.settling.push_back(std::floor(iterations));
+      }
     } else if (arg == "--option" && has_value) {
       const std::string choice = argv[++i];
       const std::size_t equals = choice.find('=');
@@ -235,7 +316,9 @@ int main(int argc, char **argv) {
       return usage(argv[0]);
     }
   }
+  // The re-solves of --settling start from rest, as the solve without a continuation does.
   if (o.size < 2 || o.threads < 0 || !std::isfinite(o.penetration) ||
+      (o.range_factor > 0.0 && !o.settling.empty()) ||
       !(o.mean_gap >= 0.0 && std::isfinite(o.mean_gap)))
     return usage(argv[0]);
   try {

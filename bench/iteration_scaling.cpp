@@ -8,7 +8,8 @@
 // With --challenge: `bugnicourt` (or the --algorithm given) on the gap on the
 // contact-mechanics challenge's scene
 // (asperity_challenge: a 100 um box, H 0.8, roll-off 20 um, short cutoff 0.1 um, rms slope 1,
-// E* 25 MPa, exponential adhesion w 50 mJ/m^2, rho 2.071 nm) under penetration control at
+// one surface at every size, challenge_scene.hpp; E* 25 MPa, exponential adhesion
+// w 50 mJ/m^2, rho 2.071 nm) under penetration control at
 // 1.5 um, to the tolerance 1e-6. With --levels L (an integer or "auto") each of those solves
 // is also run with nested grids (the option "levels" = L). One cold solve per size and row.
 //
@@ -41,6 +42,7 @@
 #include <vector>
 
 #include "bench/bench_common.hpp"
+#include "bench/challenge_scene.hpp"
 #include "core/grid.hpp"
 #include "physics/system.hpp"
 #include "physics/topography.hpp"
@@ -117,8 +119,8 @@ int main(int argc, char **argv) {
     if (!levels.empty()) rows.push_back({preconditioned ? p : "", levels, ""});
   }
 
-  const double box = challenge ? 100e-6 : 1.0, modulus = challenge ? 25e6 : 1.0;
-  const double slope = challenge ? 1.0 : 0.1, mean_pressure = 0.002, penetration = 1.5e-6;
+  const double box = challenge ? bench::challenge_box : 1.0, modulus = challenge ? 25e6 : 1.0;
+  const double slope = 0.1, mean_pressure = 0.002, penetration = 1.5e-6;
   const double tolerance = challenge ? 1e-6 : 1e-8;
   if (challenge)
     std::printf("%s (gap) on the challenge's scene, %s, penetration %.3g m, "
@@ -137,16 +139,20 @@ int main(int argc, char **argv) {
   for (long n : sizes) {
     auto grid = asp::Grid::create(2, n, n, box, box);
     grid->set_fft_planning(asp::FftPlanning::estimate);
-    asp::SelfAffineParameters params;
-    params.hurst = 0.8;
-    params.long_cutoff = box;
-    params.rolloff = challenge ? 20e-6 : 0.25;
-    params.short_cutoff = challenge ? 0.1e-6 : 8.0 / n;
-    params.norm = asp::RoughnessNorm::rms_slope;
-    params.target = slope;
-    params.seed = 1;
     std::vector<double> heights(static_cast<std::size_t>(grid->n_pixels()));
-    asp::self_affine_topography(*grid, params, heights.data());
+    if (challenge) {
+      bench::challenge_heights(*grid, heights.data());
+    } else {
+      asp::SelfAffineParameters params;
+      params.hurst = 0.8;
+      params.long_cutoff = box;
+      params.rolloff = 0.25;
+      params.short_cutoff = 8.0 / n;
+      params.norm = asp::RoughnessNorm::rms_slope;
+      params.target = slope;
+      params.seed = 1;
+      asp::self_affine_topography(*grid, params, heights.data());
+    }
     asp::System system(grid, modulus,
                        free ? asp::SubstrateKind::free : asp::SubstrateKind::periodic);
     system.set_topography(heights.data());
