@@ -140,7 +140,10 @@ void bugnicourt(Formulation &f, Monitor &monitor, bool preconditioned) {
 // step is taken instead. On the contact-mechanics challenge's scene at 1024^2 to 4096^2 this
 // cut the iterations 1.5 to 2.6 times. Along the plain gradient it changed little on nested
 // grids and led one cold solve to a state of much higher energy (docs/performance.md), so
-// there the step stays the safe one. The conjugate direction uses beta = r.Hd / d.Hd (H at
+// there the step stays the safe one. Preconditioned, the first trial after a step the bound
+// did not cut also snaps onto the wall the pixels that the adhesion makes unstable on their
+// own and pulls in (BugnicourtPasses::trial; docs/algorithms.md, "Snapping onto the wall"),
+// which a step along d would move there only over many iterations. The conjugate direction uses beta = r.Hd / d.Hd (H at
 // the iterate the step started from), restarting where that curvature is not positive.
 // Q's gradient q is followed from Q's Hessian product as in the quadratic case, and the local
 // term is evaluated element by element (one exponential per unknown, its state, gives psi,
@@ -202,6 +205,7 @@ void bugnicourt_separable(Formulation &f, const LocalTerm &psi, Monitor &monitor
   auto along = direct(p, 0.0);
 
   int followed = 0;
+  bool cut_before = true;  // whether the bound cut the last step
   for (std::int64_t iteration = 1;; ++iteration) {
     double bound = f.quadratic_part_product(d.data(), k.data());
     if (!(along[0] < 0.0 && bound > 0.0)) {
@@ -223,8 +227,14 @@ void bugnicourt_separable(Formulation &f, const LocalTerm &psi, Monitor &monitor
     // The change of the objective from x to the trial point x + alpha d (cut and rescaled),
     // which goes into the trial arrays.
     bool cut = false;
+    // Preconditioned, the first trial after a step the bound did not cut also snaps the
+    // pixels that strong adhesion makes unstable onto the wall (BugnicourtPasses::trial); a
+    // retry moves along d alone.
+    bool snap = preconditioned && !cut_before;
     const auto trial = [&](double alpha) {
-      const Trial t = passes.trial(x, d.data(), alpha, q, k.data(), c.data(), e, psi, y, qy, ey);
+      const Trial t =
+          passes.trial(x, d.data(), alpha, q, k.data(), c.data(), e, psi, y, qy, ey, snap);
+      snap = false;
       cut = t.cut;
       states = t.states;
       double quadratic_change = t.quadratic_change;
@@ -263,6 +273,7 @@ void bugnicourt_separable(Formulation &f, const LocalTerm &psi, Monitor &monitor
       followed = 0;
       value = f.quadratic_part(x, q) + value_per_state * states;
     };
+    cut_before = cut;
     followed = cut ? 0 : followed + 1;
     if (followed >= updates_between_evaluations) refresh();
     const double beta_curvature = curvature > 0.0 ? curvature : 0.0;

@@ -220,10 +220,17 @@ class BugnicourtPasses {
   // (y - x).(q + qy)/2, exactly for a quadratic, so that the objective at the trial point
   // needs no transform unless the bound cut the step (then qy is evaluated, and
   // quadratic_change gives the change again).
+  // With snap (and no mean constraint), a free unknown that the local term makes unstable on
+  // its own, 1 + psi'' < 0 (1 is the pixel stiffness, the scaled Hessian's diagonal on a
+  // periodic substrate), and whose gradient points at the bound, goes onto the bound instead:
+  // a pixel near the wall that strong adhesion pulls in, which the step along d would move
+  // there only over many iterations (bugnicourt.cpp). It counts as a cut.
   Trial trial(const double *x, const double *d, double alpha, const double *q, const double *k,
               const double *c, const double *states, const LocalTerm &psi, double *y,
-              double *qy, double *states_y) const {
+              double *qy, double *states_y, bool snap) const {
     Trial out;
+    const bool snapping = snap && !mean_;
+    const double slope = psi.slope_per_state(), bend = psi.curvature_per_state();
     double scale = 1.0;
     bool uniform = false;
     if (mean_) {
@@ -238,7 +245,10 @@ class BugnicourtPasses {
     const auto pass = [&](auto mean) {
       return loops::sums<4>(reductions_, n_, [&](std::int64_t i, double *sum) {
         const double moved = x[i] + alpha * d[i];
-        const double yi = (moved > bound(i) ? moved : bound(i)) * scale + level;
+        const bool snapped = snapping && i < bounded_ && x[i] > bound(i) &&
+                             q[i] + slope * states[i] > 0.0 && 1.0 + bend * states[i] < 0.0;
+        const double yi =
+            snapped ? bound(i) : (moved > bound(i) ? moved : bound(i)) * scale + level;
         const double qi = decltype(mean)::value
                               ? scale * (q[i] + alpha * k[i]) + (1.0 - scale) * c[i]
                               : q[i] + alpha * k[i];
@@ -249,7 +259,7 @@ class BugnicourtPasses {
         sum[0] += (yi - x[i]) * (qi + q[i]);
         sum[1] += ei - states[i];
         sum[2] += ei;
-        sum[3] += moved < bound(i) ? 1.0 : 0.0;
+        sum[3] += (moved < bound(i) || snapped) ? 1.0 : 0.0;
       });
     };
     const auto s = mean_ ? pass(std::true_type()) : pass(std::false_type());

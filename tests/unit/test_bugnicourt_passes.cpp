@@ -3,8 +3,9 @@
 // they replace: the error they gather is the formulation's error(); the curvature that the
 // Hessian product sums by Parseval is d.H d; the gradient of the adhesive primal's quadratic
 // part followed along a step, and the change of the objective to the trial point computed
-// without a transform, are those evaluations give; the local term's exponential is skipped only where
-// its slope is below 2^-60.
+// without a transform, are those evaluations give; the trial's snap puts on the wall exactly
+// the pixels that adhesion makes unstable and pulls in; the local term's exponential is
+// skipped only where its slope is below 2^-60.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -180,7 +181,8 @@ TEST_P(FollowedSeparable, GradientAndChangeAreTheEvaluatedOnes) {
   // Short enough that nothing reaches the bound: the smallest x is above 0.07.
   const double alpha = 0.05;
   const asp::Trial t = passes.trial(x.data(), d.data(), alpha, q.data(), k.data(), c.data(),
-                                    states.data(), *psi, y.data(), qy.data(), states_y.data());
+                                    states.data(), *psi, y.data(), qy.data(), states_y.data(),
+                                    false);
   ASSERT_FALSE(t.cut);
   const double quadratic_y = f.quadratic_part(y.data(), evaluated.data());
   for (std::size_t i = 0; i < n; ++i)
@@ -210,6 +212,57 @@ INSTANTIATE_TEST_SUITE_P(Controls, FollowedSeparable,
                            return info.param == Control::penetration ? "penetration"
                                                                      : "mean_gap";
                          });
+
+// The trial's snap, on the adhesive scene (psi'' down to -4 pixel stiffnesses, so that a
+// pixel alone is unstable below 0.5 ln 4 = 0.69 in scaled units): every free unknown with
+// 1 + psi'' < 0 whose gradient points at the bound goes onto it, every other one moves as the
+// trial without the snap moves it, to the bit, and the trial counts as cut. Under a mean
+// constraint nothing snaps (the rescaling to the mean would move the snapped pixels again).
+TEST(SnappingTrial, PutsThePixelsThatAdhesionMakesUnstableOnTheWall) {
+  for (const Control control : {Control::penetration, Control::mean_gap}) {
+    Scene scene(true);
+    asp::PrimalFormulation f(scene.system, control, control == Control::mean_gap ? 0.6 : 0.003);
+    const asp::LocalTerm *psi = f.local_term();
+    ASSERT_NE(psi, nullptr);
+    const auto n = static_cast<std::size_t>(f.size());
+    const asp::BugnicourtPasses passes(f);
+    Vector x = random_vector(n, 41, 0.05, 1.5);
+    f.project(x.data());
+    Vector q(n), c(n), k(n), states(n), plain(n), snapped(n), qy(n), states_y(n);
+    f.quadratic_part_at_zero(c.data());
+    f.quadratic_part(x.data(), q.data());
+    passes.local_states(x.data(), *psi, states.data());
+    const Vector d = random_vector(n, 42, -1.0, 1.0);
+    f.quadratic_part_product(d.data(), k.data());
+    // Short enough that nothing reaches the bound along d.
+    const double alpha = 0.01;
+    const asp::Trial without =
+        passes.trial(x.data(), d.data(), alpha, q.data(), k.data(), c.data(), states.data(),
+                     *psi, plain.data(), qy.data(), states_y.data(), false);
+    ASSERT_FALSE(without.cut);
+    const asp::Trial with =
+        passes.trial(x.data(), d.data(), alpha, q.data(), k.data(), c.data(), states.data(),
+                     *psi, snapped.data(), qy.data(), states_y.data(), true);
+    std::size_t on_the_wall = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const bool unstable = 1.0 + psi->curvature_per_state() * states[i] < 0.0;
+      const bool pulled = q[i] + psi->slope_per_state() * states[i] > 0.0;
+      if (control == Control::penetration && unstable && pulled) {
+        ASSERT_EQ(snapped[i], f.lower_bound()) << "pixel " << i;
+        ++on_the_wall;
+      } else {
+        ASSERT_EQ(snapped[i], plain[i]) << "pixel " << i;
+      }
+    }
+    if (control == Control::penetration) {
+      EXPECT_GT(on_the_wall, 0u);
+      EXPECT_LT(on_the_wall, n);
+      EXPECT_TRUE(with.cut);
+    } else {
+      EXPECT_FALSE(with.cut);
+    }
+  }
+}
 
 // The exponential is skipped exactly where the slope it would give is below 2^-60 (in units
 // of the reference pressure): at the threshold the slope is 2^-60 to rounding, and beyond it
