@@ -38,6 +38,10 @@ class LocalTerm {
   double slope_per_state() const { return slope_per_state_; }
   double curvature_per_state() const { return curvature_per_state_; }
   double negligible_beyond() const { return negligible_beyond_; }
+  // Whether an unknown in this state is unstable on its own: psi'' below minus the scaled
+  // Hessian's unit pixel stiffness, so that, the others held, its own curvature is negative
+  // (strong adhesion near the wall, whose cohesive zone the grid does not resolve).
+  bool unstable_alone(double state) const { return 1.0 + curvature_per_state_ * state < 0.0; }
 
  private:
   double value_per_state_, slope_per_state_, curvature_per_state_, range_;

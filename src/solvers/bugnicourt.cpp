@@ -143,8 +143,9 @@ void bugnicourt(Formulation &f, Monitor &monitor, bool preconditioned) {
 // there the step stays the safe one. Preconditioned, the first trial after a step the bound
 // did not cut also snaps onto the wall the pixels that the adhesion makes unstable on their
 // own and pulls in (BugnicourtPasses::trial; docs/algorithms.md, "Snapping onto the wall"),
-// which a step along d would move there only over many iterations. The conjugate direction uses beta = r.Hd / d.Hd (H at
-// the iterate the step started from), restarting where that curvature is not positive.
+// which a step along d would move there only over many iterations. The conjugate direction
+// uses beta = r.Hd / d.Hd (H at the iterate the step started from), restarting where that
+// curvature is not positive.
 // Q's gradient q is followed from Q's Hessian product as in the quadratic case, and the local
 // term is evaluated element by element (one exponential per unknown, its state, gives psi,
 // psi' and psi''), so that the objective at a trial point needs no transform unless the bound

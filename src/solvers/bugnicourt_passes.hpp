@@ -215,22 +215,21 @@ class BugnicourtPasses {
 
   // Separable objectives f = Q + sum psi: the trial point y = s max(x + alpha d, lower) (s as
   // in step), Q's gradient there followed, qy = s (q + alpha k) + (1 - s) c (k = Q d, c Q's
-  // gradient at 0, read only under a mean constraint), and the local term's states there, into y, qy and states_y; with the
-  // changes from x, where q and states hold Q's gradient and the states. Q changes by
-  // (y - x).(q + qy)/2, exactly for a quadratic, so that the objective at the trial point
-  // needs no transform unless the bound cut the step (then qy is evaluated, and
-  // quadratic_change gives the change again).
+  // gradient at 0, read only under a mean constraint), and the local term's states there,
+  // into y, qy and states_y; with the changes from x, where q and states hold Q's gradient
+  // and the states. Q changes by (y - x).(q + qy)/2, exactly for a quadratic, so that the
+  // objective at the trial point needs no transform unless the bound cut the step (then qy is
+  // evaluated, and quadratic_change gives the change again).
   // With snap (and no mean constraint), a free unknown that the local term makes unstable on
-  // its own, 1 + psi'' < 0 (1 is the pixel stiffness, the scaled Hessian's diagonal on a
-  // periodic substrate), and whose gradient points at the bound, goes onto the bound instead:
-  // a pixel near the wall that strong adhesion pulls in, which the step along d would move
-  // there only over many iterations (bugnicourt.cpp). It counts as a cut.
+  // its own (LocalTerm::unstable_alone) and whose gradient points at the bound goes onto the
+  // bound instead: a pixel near the wall that strong adhesion pulls in, which the step along
+  // d would move there only over many iterations (bugnicourt.cpp). It counts as a cut.
   Trial trial(const double *x, const double *d, double alpha, const double *q, const double *k,
               const double *c, const double *states, const LocalTerm &psi, double *y,
               double *qy, double *states_y, bool snap) const {
     Trial out;
     const bool snapping = snap && !mean_;
-    const double slope = psi.slope_per_state(), bend = psi.curvature_per_state();
+    const double slope = psi.slope_per_state();
     double scale = 1.0;
     bool uniform = false;
     if (mean_) {
@@ -246,7 +245,7 @@ class BugnicourtPasses {
       return loops::sums<4>(reductions_, n_, [&](std::int64_t i, double *sum) {
         const double moved = x[i] + alpha * d[i];
         const bool snapped = snapping && i < bounded_ && x[i] > bound(i) &&
-                             q[i] + slope * states[i] > 0.0 && 1.0 + bend * states[i] < 0.0;
+                             q[i] + slope * states[i] > 0.0 && psi.unstable_alone(states[i]);
         const double yi =
             snapped ? bound(i) : (moved > bound(i) ? moved : bound(i)) * scale + level;
         const double qi = decltype(mean)::value

@@ -158,6 +158,38 @@ TEST(QuadraticPartProduct, CurvatureIsTheSumOverPixels) {
 // difference loses their size: n eps (|f(x)| + |f(y)|).
 class FollowedSeparable : public ::testing::TestWithParam<Control> {};
 
+// What the trial pass reads, at an iterate with every unknown off the bound (random in
+// [low, 1.5) from `seed`, then projected: under a mean constraint the mean on target, as the
+// solver keeps it): Q's gradient there (q, and its value) and at 0 (c), the local term's
+// states, a random direction d (from seed + 1) and k = Q d.
+struct TrialInputs {
+  Vector x, q, c, k, states, d;
+  double quadratic_x = 0.0;
+
+  TrialInputs(asp::PrimalFormulation &f, const asp::BugnicourtPasses &passes,
+              const asp::LocalTerm &psi, std::uint64_t seed, double low) {
+    const auto n = static_cast<std::size_t>(f.size());
+    x = random_vector(n, seed, low, 1.5);
+    f.project(x.data());
+    q.resize(n);
+    c.resize(n);
+    k.resize(n);
+    states.resize(n);
+    f.quadratic_part_at_zero(c.data());
+    quadratic_x = f.quadratic_part(x.data(), q.data());
+    passes.local_states(x.data(), psi, states.data());
+    d = random_vector(n, seed + 1, -1.0, 1.0);
+    f.quadratic_part_product(d.data(), k.data());
+  }
+
+  // The trial pass from these inputs, into y, qy and states_y.
+  asp::Trial trial(const asp::BugnicourtPasses &passes, const asp::LocalTerm &psi, double alpha,
+                   Vector &y, Vector &qy, Vector &states_y, bool snap) const {
+    return passes.trial(x.data(), d.data(), alpha, q.data(), k.data(), c.data(), states.data(),
+                        psi, y.data(), qy.data(), states_y.data(), snap);
+  }
+};
+
 TEST_P(FollowedSeparable, GradientAndChangeAreTheEvaluatedOnes) {
   const Control control = GetParam();
   Scene scene(true);
@@ -168,21 +200,14 @@ TEST_P(FollowedSeparable, GradientAndChangeAreTheEvaluatedOnes) {
   const auto n = static_cast<std::size_t>(f.size());
   const asp::BugnicourtPasses passes(f);
 
-  // An iterate with every unknown off the bound (so that a short step cuts nothing) and, under
-  // the mean constraint, the mean on target, as the solver keeps it.
-  Vector x = random_vector(n, 31, 0.1, 1.5);
-  f.project(x.data());
-  Vector q(n), c(n), k(n), states(n), y(n), qy(n), states_y(n), evaluated(n), full(n);
-  f.quadratic_part_at_zero(c.data());
-  const double quadratic_x = f.quadratic_part(x.data(), q.data());
-  passes.local_states(x.data(), *psi, states.data());
-  const Vector d = random_vector(n, 32, -1.0, 1.0);
-  f.quadratic_part_product(d.data(), k.data());
+  // Every unknown off the bound, so that a short step cuts nothing.
+  const TrialInputs in(f, passes, *psi, 31, 0.1);
+  const Vector &x = in.x, &q = in.q;
+  const double quadratic_x = in.quadratic_x;
+  Vector y(n), qy(n), states_y(n), evaluated(n), full(n);
   // Short enough that nothing reaches the bound: the smallest x is above 0.07.
   const double alpha = 0.05;
-  const asp::Trial t = passes.trial(x.data(), d.data(), alpha, q.data(), k.data(), c.data(),
-                                    states.data(), *psi, y.data(), qy.data(), states_y.data(),
-                                    false);
+  const asp::Trial t = in.trial(passes, *psi, alpha, y, qy, states_y, false);
   ASSERT_FALSE(t.cut);
   const double quadratic_y = f.quadratic_part(y.data(), evaluated.data());
   for (std::size_t i = 0; i < n; ++i)
@@ -226,23 +251,14 @@ TEST(SnappingTrial, PutsThePixelsThatAdhesionMakesUnstableOnTheWall) {
     ASSERT_NE(psi, nullptr);
     const auto n = static_cast<std::size_t>(f.size());
     const asp::BugnicourtPasses passes(f);
-    Vector x = random_vector(n, 41, 0.05, 1.5);
-    f.project(x.data());
-    Vector q(n), c(n), k(n), states(n), plain(n), snapped(n), qy(n), states_y(n);
-    f.quadratic_part_at_zero(c.data());
-    f.quadratic_part(x.data(), q.data());
-    passes.local_states(x.data(), *psi, states.data());
-    const Vector d = random_vector(n, 42, -1.0, 1.0);
-    f.quadratic_part_product(d.data(), k.data());
+    const TrialInputs in(f, passes, *psi, 41, 0.05);
+    const Vector &q = in.q, &states = in.states;
+    Vector plain(n), snapped(n), qy(n), states_y(n);
     // Short enough that nothing reaches the bound along d.
     const double alpha = 0.01;
-    const asp::Trial without =
-        passes.trial(x.data(), d.data(), alpha, q.data(), k.data(), c.data(), states.data(),
-                     *psi, plain.data(), qy.data(), states_y.data(), false);
+    const asp::Trial without = in.trial(passes, *psi, alpha, plain, qy, states_y, false);
     ASSERT_FALSE(without.cut);
-    const asp::Trial with =
-        passes.trial(x.data(), d.data(), alpha, q.data(), k.data(), c.data(), states.data(),
-                     *psi, snapped.data(), qy.data(), states_y.data(), true);
+    const asp::Trial with = in.trial(passes, *psi, alpha, snapped, qy, states_y, true);
     std::size_t on_the_wall = 0;
     for (std::size_t i = 0; i < n; ++i) {
       const bool unstable = 1.0 + psi->curvature_per_state() * states[i] < 0.0;
