@@ -28,10 +28,13 @@
 // nearest pixel on the wall at K, and the median gap of the missing ones in units of rho.
 // It shows how the contact set settles during a solve.
 //
+// With --trace the progress line (iteration, seconds, error) is printed at every iteration of
+// the solve on the system's grid instead of once a minute.
+//
 // usage: asperity_challenge [--size N] [--threads T] [--algorithm NAME[:VARIABLE]]
 //                           [--penetration D | --mean-gap G] [--tolerance T]
 //                           [--max-iterations K] [--no-pair] [--estimate]
-//                           [--range-continuation F] [--settling K,K,...]
+//                           [--range-continuation F] [--settling K,K,...] [--trace]
 //                           [--option NAME=VALUE]   (an option of the algorithm: a number,
 //                                                    or else a word; repeatable)
 //        (defaults: 16384, the library's default threads, bugnicourt:gap, 1.5e-6 m, 1e-6,
@@ -76,6 +79,7 @@ struct Options {
   double range_factor = 0.0;  // > 0: a first solve with this multiple of the range
   std::vector<std::pair<std::string, std::string>> choices;  // --option NAME=VALUE
   std::vector<double> settling;  // --settling: the iteration counts to compare at
+  bool trace = false;            // --trace: the error at every iteration
 };
 
 // The pixels on the wall (g = 0) of the system's state.
@@ -150,11 +154,12 @@ void report_settling(const Options &o, asp::Solver &solver, asp::System &system,
 // A line a minute, so that an hour-long solve shows where it is.
 struct Progress {
   std::chrono::steady_clock::time_point last = std::chrono::steady_clock::now();
+  bool every = false;  // --trace: a line every iteration
 };
 
 int report_progress(std::int64_t iteration, double seconds, double error, void *data) {
   auto *progress = static_cast<Progress *>(data);
-  if (bench::seconds_since(progress->last) >= 60.0) {
+  if (progress->every || bench::seconds_since(progress->last) >= 60.0) {
     progress->last = std::chrono::steady_clock::now();
     std::printf("  iteration %lld, %.0f s, error %.3e\n", static_cast<long long>(iteration),
                 seconds, error);
@@ -202,6 +207,7 @@ int run(const Options &o) {
   solver.set_option("tolerance", o.tolerance);
   solver.set_option("max_iterations", o.max_iterations);
   Progress progress;
+  progress.every = o.trace;
   solver.set_progress(report_progress, &progress);
   asp::reset_field_bytes_peak();
   const std::int64_t before = asp::field_bytes_in_use();
@@ -263,7 +269,7 @@ int usage(const char *program) {
   std::fprintf(stderr,
                "usage: %s [--size N] [--threads T] [--algorithm NAME[:VARIABLE]] "
                "[--penetration D | --mean-gap G] [--tolerance T] [--max-iterations K] [--no-pair] "
-               "[--estimate] [--range-continuation F] [--settling K,K,...] "
+               "[--estimate] [--range-continuation F] [--settling K,K,...] [--trace] "
                "[--option NAME=VALUE]\n",
                program);
   return 2;
@@ -295,6 +301,8 @@ int main(int argc, char **argv) {
       o.max_iterations = std::strtod(argv[++i], nullptr);
     } else if (arg == "--no-pair") {
       o.pair = false;
+    } else if (arg == "--trace") {
+      o.trace = true;
     } else if (arg == "--estimate") {
       o.estimate = true;
     } else if (arg == "--range-continuation" && has_value) {

@@ -38,10 +38,35 @@ class LocalTerm {
   double slope_per_state() const { return slope_per_state_; }
   double curvature_per_state() const { return curvature_per_state_; }
   double negligible_beyond() const { return negligible_beyond_; }
-  // Whether an unknown in this state is unstable on its own: psi'' below minus the scaled
-  // Hessian's unit pixel stiffness, so that, the others held, its own curvature is negative
+  // An unknown's own curvature in this state, the others held: the scaled Hessian's unit
+  // pixel stiffness plus psi''. Below 1 near the wall, where the adhesion pulls the harder the
+  // closer the surface comes.
+  double own_curvature(double state) const { return 1.0 + curvature_per_state_ * state; }
+  // Whether an unknown in this state is unstable on its own: its own curvature is negative
   // (strong adhesion near the wall, whose cohesive zone the grid does not resolve).
-  bool unstable_alone(double state) const { return 1.0 + curvature_per_state_ * state < 0.0; }
+  bool unstable_alone(double state) const { return own_curvature(state) < 0.0; }
+
+  // Where an unknown at x, with the quadratic part's gradient q there and its model sloping
+  // away from the wall (q + psi'(x) < 0), comes to rest beyond the instability, the others
+  // held: the root of m'(t) = q + (t - x) + psi'(t), the derivative of the one-unknown model
+  //     m(t) = q (t - x) + (t - x)^2 / 2 + psi(t),
+  // on the side where m is convex. m' is decreasing while 1 + psi'' < 0 and convex
+  // increasing beyond (psi''' > 0), so that root is its only one above x. Newton's method
+  // starts from t = x - q, the rest point without the adhesion, where m' = psi'(t) > 0: from
+  // the right of the root of a convex increasing function it falls monotonically onto the
+  // root, every iterate a point where m' > 0 still. Twelve steps reach rounding from the
+  // starts the formulation's units produce; where the root is a near-double one (the outer
+  // minimum about to vanish) Newton's method slows, and the last iterate lies right of it.
+  double rest_beyond_instability(double x, double q) const {
+    double t = x - q;
+    for (int step = 0; step < 12; ++step) {
+      const double s = state(t);
+      const double curvature = 1.0 + curvature_per_state_ * s;
+      if (!(curvature > 0.0)) break;
+      t -= (q + (t - x) + slope_per_state_ * s) / curvature;
+    }
+    return t;
+  }
 
  private:
   double value_per_state_, slope_per_state_, curvature_per_state_, range_;

@@ -13,7 +13,8 @@
 //    the Hessian product, and the gather at the new iterate, in one pass (after a sum of the
 //    moved iterate under a mean constraint);
 //  - trial (separable objectives): the move, the quadratic part's gradient followed, the local
-//    term's state and the objective at the new point, into trial arrays.
+//    term's state and the objective at the new point, into trial arrays; on request the
+//    jumps across the local term's instability (snaps onto the wall, peels off it).
 // The kernels are kept lean on purpose: a pass over arrays that fit in cache costs its
 // arithmetic, not its memory traffic.
 // The unknowns are pixels (real space), whose inner product is the plain sum.
@@ -114,17 +115,19 @@ class BugnicourtPasses {
     });
   }
 
-  // Preconditioned: z <- M r, M the formulation's preconditioner applied to the projection r
-  // of gradient(i) at x (0 off N), made mean-free on N under a mean constraint, then
+  // Preconditioned: z <- M r + own(i) r, M the formulation's preconditioner applied to the
+  // projection r of gradient(i) at x (0 off N), own(i) a correction of M's diagonal that the
+  // caller gives per unknown (0 for none; its sum with M must stay positive definite), z made
+  // mean-free on N under a mean constraint, then
   // d <- -z + beta d on N, 0 elsewhere, with beta = z.(H d_old) / curvature, which keeps d
   // conjugate to d_old (product(i) is (H d_old)_i; curvature d_old.H d_old, not positive for
   // a restart). Returns the descent r.d, negative unless r = 0 (M is positive definite), and
   // the sum of extra(i, d_i). Three passes and M's transform pair.
-  template <class Gradient, class Product, class Extra>
+  template <class Gradient, class Product, class Extra, class Own>
   std::array<double, 2> direct_preconditioned(const double *x, Gradient &&gradient,
                                               const Projection &p, Product &&product,
                                               double curvature, double *z, double *d,
-                                              Extra &&extra) const {
+                                              Extra &&extra, Own &&own) const {
     const double shift = p.shift, again = p.again;
     // r_i, and whether i is in N.
     const auto projected = [&](std::int64_t i, bool &kept) {
@@ -139,10 +142,11 @@ class BugnicourtPasses {
     });
     if (!f_.precondition(z))
       throw Error(Status::internal, "bugnicourt: the formulation offers no preconditioner");
-    // Over N: its count, the sums of z, of z h and of h.
+    // z's correction, then over N: its count, the sums of z, of z h and of h.
     const auto s = loops::sums<4>(reductions_, n_, [&](std::int64_t i, double *t) {
       bool kept;
-      projected(i, kept);
+      const double r = projected(i, kept);
+      if (kept) z[i] += own(i) * r;
       const double hi = product(i);
       t[0] += kept ? 1.0 : 0.0;
       t[1] += kept ? z[i] : 0.0;
@@ -220,15 +224,21 @@ class BugnicourtPasses {
   // and the states. Q changes by (y - x).(q + qy)/2, exactly for a quadratic, so that the
   // objective at the trial point needs no transform unless the bound cut the step (then qy is
   // evaluated, and quadratic_change gives the change again).
-  // With snap (and no mean constraint), a free unknown that the local term makes unstable on
-  // its own (LocalTerm::unstable_alone) and whose gradient points at the bound goes onto the
-  // bound instead: a pixel near the wall that strong adhesion pulls in, which the step along
-  // d would move there only over many iterations (bugnicourt.cpp). It counts as a cut.
+  // With jumps (and no mean constraint), an unknown that the local term makes unstable on its
+  // own (LocalTerm::unstable_alone) jumps across the instability instead of moving along d:
+  //  - a snap: free, with its gradient pointing at the bound, it goes onto the bound (a pixel
+  //    near the wall that strong adhesion pulls in);
+  //  - a peel: with its gradient pointing away from the bound, on it or free, it goes where
+  //    it comes to rest beyond the instability, the others held
+  //    (LocalTerm::rest_beyond_instability; a pixel that the elastic field tears off the
+  //    wall);
+  // both of which a step along d makes only over many iterations (bugnicourt.cpp). A jump
+  // counts as a cut.
   Trial trial(const double *x, const double *d, double alpha, const double *q, const double *k,
               const double *c, const double *states, const LocalTerm &psi, double *y,
-              double *qy, double *states_y, bool snap) const {
+              double *qy, double *states_y, bool jumps) const {
     Trial out;
-    const bool snapping = snap && !mean_;
+    const bool jumping = jumps && !mean_;
     const double slope = psi.slope_per_state();
     double scale = 1.0;
     bool uniform = false;
@@ -244,10 +254,14 @@ class BugnicourtPasses {
     const auto pass = [&](auto mean) {
       return loops::sums<4>(reductions_, n_, [&](std::int64_t i, double *sum) {
         const double moved = x[i] + alpha * d[i];
-        const bool snapped = snapping && i < bounded_ && x[i] > bound(i) &&
-                             q[i] + slope * states[i] > 0.0 && psi.unstable_alone(states[i]);
-        const double yi =
-            snapped ? bound(i) : (moved > bound(i) ? moved : bound(i)) * scale + level;
+        // Only the bounded unknowns have psi.
+        const bool unstable = jumping && i < bounded_ && psi.unstable_alone(states[i]);
+        const double gradient = q[i] + slope * states[i];
+        const bool snapped = unstable && x[i] > bound(i) && gradient > 0.0;
+        const bool peeled = unstable && gradient < 0.0;
+        const double yi = snapped  ? bound(i)
+                          : peeled ? psi.rest_beyond_instability(x[i], q[i])
+                                   : (moved > bound(i) ? moved : bound(i)) * scale + level;
         const double qi = decltype(mean)::value
                               ? scale * (q[i] + alpha * k[i]) + (1.0 - scale) * c[i]
                               : q[i] + alpha * k[i];
@@ -258,7 +272,7 @@ class BugnicourtPasses {
         sum[0] += (yi - x[i]) * (qi + q[i]);
         sum[1] += ei - states[i];
         sum[2] += ei;
-        sum[3] += (moved < bound(i) || snapped) ? 1.0 : 0.0;
+        sum[3] += (moved < bound(i) || snapped || peeled) ? 1.0 : 0.0;
       });
     };
     const auto s = mean_ ? pass(std::true_type()) : pass(std::false_type());

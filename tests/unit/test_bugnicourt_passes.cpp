@@ -3,9 +3,12 @@
 // they replace: the error they gather is the formulation's error(); the curvature that the
 // Hessian product sums by Parseval is d.H d; the gradient of the adhesive primal's quadratic
 // part followed along a step, and the change of the objective to the trial point computed
-// without a transform, are those evaluations give; the trial's snap puts on the wall exactly
-// the pixels that adhesion makes unstable and pulls in; the local term's exponential is
-// skipped only where its slope is below 2^-60.
+// without a transform, are those evaluations give; the trial's jumps put on the wall exactly
+// the pixels that adhesion makes unstable and pulls in, and where they come to rest exactly
+// the unstable ones that the elastic field pulls off; the preconditioned direction adds the
+// caller's correction of M's diagonal; the local term's exponential is skipped only where its
+// slope is below 2^-60, and its rest beyond the instability is the root of the one-pixel
+// model's slope.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -184,9 +187,9 @@ struct TrialInputs {
 
   // The trial pass from these inputs, into y, qy and states_y.
   asp::Trial trial(const asp::BugnicourtPasses &passes, const asp::LocalTerm &psi, double alpha,
-                   Vector &y, Vector &qy, Vector &states_y, bool snap) const {
+                   Vector &y, Vector &qy, Vector &states_y, bool jumps) const {
     return passes.trial(x.data(), d.data(), alpha, q.data(), k.data(), c.data(), states.data(),
-                        psi, y.data(), qy.data(), states_y.data(), snap);
+                        psi, y.data(), qy.data(), states_y.data(), jumps);
   }
 };
 
@@ -238,12 +241,14 @@ INSTANTIATE_TEST_SUITE_P(Controls, FollowedSeparable,
                                                                      : "mean_gap";
                          });
 
-// The trial's snap, on the adhesive scene (psi'' down to -4 pixel stiffnesses, so that a
+// The trial's jumps, on the adhesive scene (psi'' down to -4 pixel stiffnesses, so that a
 // pixel alone is unstable below 0.5 ln 4 = 0.69 in scaled units): every free unknown with
-// 1 + psi'' < 0 whose gradient points at the bound goes onto it, every other one moves as the
-// trial without the snap moves it, to the bit, and the trial counts as cut. Under a mean
-// constraint nothing snaps (the rescaling to the mean would move the snapped pixels again).
-TEST(SnappingTrial, PutsThePixelsThatAdhesionMakesUnstableOnTheWall) {
+// 1 + psi'' < 0 whose gradient points at the bound goes onto it (a snap), every such unknown
+// whose gradient points away goes where LocalTerm::rest_beyond_instability puts it (a peel),
+// every other one moves as the trial without the jumps moves it, to the bit, and the trial
+// counts as cut. Under a mean constraint nothing jumps (the rescaling to the mean would move
+// the pixels again).
+TEST(JumpingTrial, SnapsAndPeelsThePixelsThatAdhesionMakesUnstable) {
   for (const Control control : {Control::penetration, Control::mean_gap}) {
     Scene scene(true);
     asp::PrimalFormulation f(scene.system, control, control == Control::mean_gap ? 0.6 : 0.003);
@@ -252,31 +257,100 @@ TEST(SnappingTrial, PutsThePixelsThatAdhesionMakesUnstableOnTheWall) {
     const auto n = static_cast<std::size_t>(f.size());
     const asp::BugnicourtPasses passes(f);
     const TrialInputs in(f, passes, *psi, 41, 0.05);
-    const Vector &q = in.q, &states = in.states;
-    Vector plain(n), snapped(n), qy(n), states_y(n);
+    const Vector &x = in.x, &q = in.q, &states = in.states;
+    Vector plain(n), jumped(n), qy(n), states_y(n);
     // Short enough that nothing reaches the bound along d.
     const double alpha = 0.01;
     const asp::Trial without = in.trial(passes, *psi, alpha, plain, qy, states_y, false);
     ASSERT_FALSE(without.cut);
-    const asp::Trial with = in.trial(passes, *psi, alpha, snapped, qy, states_y, true);
-    std::size_t on_the_wall = 0;
+    const asp::Trial with = in.trial(passes, *psi, alpha, jumped, qy, states_y, true);
+    std::size_t snapped = 0, peeled = 0;
     for (std::size_t i = 0; i < n; ++i) {
       const bool unstable = 1.0 + psi->curvature_per_state() * states[i] < 0.0;
-      const bool pulled = q[i] + psi->slope_per_state() * states[i] > 0.0;
-      if (control == Control::penetration && unstable && pulled) {
-        ASSERT_EQ(snapped[i], f.lower_bound()) << "pixel " << i;
-        ++on_the_wall;
+      const double gradient = q[i] + psi->slope_per_state() * states[i];
+      if (control == Control::penetration && unstable && gradient > 0.0) {
+        ASSERT_EQ(jumped[i], f.lower_bound()) << "pixel " << i;
+        ++snapped;
+      } else if (control == Control::penetration && unstable && gradient < 0.0) {
+        ASSERT_EQ(jumped[i], psi->rest_beyond_instability(x[i], q[i])) << "pixel " << i;
+        ASSERT_GT(jumped[i], x[i]) << "pixel " << i;
+        ++peeled;
       } else {
-        ASSERT_EQ(snapped[i], plain[i]) << "pixel " << i;
+        ASSERT_EQ(jumped[i], plain[i]) << "pixel " << i;
       }
     }
     if (control == Control::penetration) {
-      EXPECT_GT(on_the_wall, 0u);
-      EXPECT_LT(on_the_wall, n);
+      EXPECT_GT(snapped, 0u);
+      EXPECT_GT(peeled, 0u);
+      EXPECT_LT(snapped + peeled, n);
       EXPECT_TRUE(with.cut);
     } else {
       EXPECT_FALSE(with.cut);
     }
+  }
+}
+
+// The preconditioned direction with a correction own(i) of M's diagonal, from a restart
+// (beta = 0): on N, d = -(M r + own r - mean) with the mean over N under a mean constraint
+// (0 without one), and 0 off N; the descent is r.d. M r is the formulation's preconditioner
+// applied to r (0 off N), as the pass applies it; the two differ by the rounding of the sums
+// in another order.
+TEST(PreconditionedDirection, AddsTheCallersCorrectionOfTheDiagonal) {
+  for (const Control control : {Control::penetration, Control::mean_gap}) {
+    Scene scene(true);
+    asp::PrimalFormulation f(scene.system, control, control == Control::mean_gap ? 0.6 : 0.003);
+    const asp::LocalTerm *psi = f.local_term();
+    ASSERT_NE(psi, nullptr);
+    const auto n = static_cast<std::size_t>(f.size());
+    const asp::BugnicourtPasses passes(f);
+    // A third of the unknowns on the bound, so that N is a proper subset.
+    Vector x = random_vector(n, 51, -0.5, 1.0);
+    for (double &xi : x) xi = std::max(xi, f.lower_bound());
+    Vector q(n), states(n), g(n);
+    f.quadratic_part(x.data(), q.data());
+    passes.local_states(x.data(), *psi, states.data());
+    for (std::size_t i = 0; i < n; ++i) g[i] = q[i] + psi->slope_per_state() * states[i];
+    const auto gradient = [&](std::int64_t i) { return g[static_cast<std::size_t>(i)]; };
+    const auto none = [](std::int64_t) { return 0.0; };
+    const Vector own = random_vector(n, 52, 0.0, 3.0);
+    const asp::Projection p = passes.gather(x.data(), gradient, none, 0.0, 0.0);
+
+    Vector z(n), d(n);
+    const auto along = passes.direct_preconditioned(
+        x.data(), gradient, p, none, 0.0, z.data(), d.data(),
+        [](std::int64_t, double) { return 0.0; },
+        [&](std::int64_t i) { return own[static_cast<std::size_t>(i)]; });
+
+    // The reference: r on N, M r, the correction, the mean over N.
+    Vector r(n), expected(n);
+    std::vector<char> kept(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double ri = g[i] - p.shift;
+      kept[i] = x[i] > f.lower_bound() || ri <= 0.0;
+      r[i] = kept[i] ? ri - p.again : 0.0;
+    }
+    Vector mr = r;
+    ASSERT_TRUE(f.precondition(mr.data()));
+    double count = 0.0, sum = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!kept[i]) continue;
+      expected[i] = mr[i] + own[i] * r[i];
+      count += 1.0;
+      sum += expected[i];
+    }
+    ASSERT_GT(count, 0.0);
+    ASSERT_LT(count, static_cast<double>(n));
+    const double mean = control == Control::mean_gap ? sum / count : 0.0;
+    double descent = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      expected[i] = kept[i] ? -(expected[i] - mean) : 0.0;
+      descent += r[i] * expected[i];
+    }
+    const double scale = max_abs(expected);
+    for (std::size_t i = 0; i < n; ++i)
+      ASSERT_NEAR(d[i], expected[i], 1e-13 * scale) << "pixel " << i;
+    EXPECT_NEAR(along[0], descent, 1e-12 * std::fabs(descent));
+    EXPECT_LT(along[0], 0.0);
   }
 }
 
@@ -297,6 +371,38 @@ TEST(LocalTerm, SkipsTheExponentialOnlyWhereTheSlopeIsBelowTwoToTheMinusSixty) {
       EXPECT_EQ(psi.slope_per_state(), potential.dphi(0.0));
       EXPECT_EQ(psi.curvature_per_state(), potential.d2phi(0.0));
       EXPECT_EQ(psi.value_per_state(), potential.phi(0.0));
+    }
+  }
+}
+
+// The rest beyond the instability is the root of the one-pixel model's slope
+// m'(t) = q + (t - x) + psi'(t) on the side where m is convex (1 + psi''(t) > 0), above x: for
+// strong adhesion (psi'' at the wall down to -100 pixel stiffnesses), starts on the wall and
+// inside the unstable zone, and gradients from barely to far past what tears the pixel off
+// (q + psi'(x) from -1e-3 to -1e3). m'(t) vanishes to the rounding of its largest term.
+TEST(LocalTerm, RestBeyondTheInstabilityIsTheRootOfTheModelsSlope) {
+  for (double work : {0.5, 1.0}) {
+    for (double range : {0.1, 0.2}) {
+      const asp::ExponentialPotential potential{work, range};
+      const asp::LocalTerm psi(potential);
+      ASSERT_TRUE(psi.unstable_alone(1.0));
+      for (double x : {0.0, 0.05, 0.2}) {
+        const double e = psi.state(x);
+        if (!psi.unstable_alone(e)) continue;
+        for (double pull : {1e-3, 1.0, 1e3}) {
+          // q + psi'(x) = -pull.
+          const double q = -pull - psi.slope_per_state() * e;
+          const double t = psi.rest_beyond_instability(x, q);
+          const double et = psi.state(t);
+          const double slope = q + (t - x) + psi.slope_per_state() * et;
+          const double largest = std::max({std::fabs(q), std::fabs(t - x),
+                                           psi.slope_per_state() * et});
+          EXPECT_NEAR(slope, 0.0, 8.0 * epsilon * largest)
+              << work << " " << range << " " << x << " " << pull;
+          EXPECT_GT(psi.own_curvature(et), 0.0) << work << " " << range << " " << x;
+          EXPECT_GT(t, x);
+        }
+      }
     }
   }
 }
