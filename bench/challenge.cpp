@@ -29,7 +29,8 @@
 // It shows how the contact set settles during a solve.
 //
 // With --trace the progress line (iteration, seconds, error) is printed at every iteration of
-// the solve on the system's grid instead of once a minute.
+// the solves on the system's grid (the solve of --range-continuation included; the coarse
+// levels report none) instead of once a minute.
 //
 // usage: asperity_challenge [--size N] [--threads T] [--algorithm NAME[:VARIABLE]]
 //                           [--penetration D | --mean-gap G] [--tolerance T]
@@ -151,7 +152,8 @@ void report_settling(const Options &o, asp::Solver &solver, asp::System &system,
   }
 }
 
-// A line a minute, so that an hour-long solve shows where it is.
+// A line a minute, so that an hour-long solve shows where it is; with --trace, a line every
+// iteration.
 struct Progress {
   std::chrono::steady_clock::time_point last = std::chrono::steady_clock::now();
   bool every = false;  // --trace: a line every iteration

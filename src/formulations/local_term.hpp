@@ -46,9 +46,28 @@ class LocalTerm {
   // (strong adhesion near the wall, whose cohesive zone the grid does not resolve).
   bool unstable_alone(double state) const { return own_curvature(state) < 0.0; }
 
-  // Where an unknown at x, with the quadratic part's gradient q there and its model sloping
-  // away from the wall (q + psi'(x) < 0), comes to rest beyond the instability, the others
-  // held: the root of m'(t) = q + (t - x) + psi'(t), the derivative of the one-unknown model
+  // The correction of a Fourier preconditioner's diagonal for an unknown in this state, by
+  // which a preconditioned solver lengthens its move along its own residual (bugnicourt.cpp):
+  // M moves an unknown along its own residual about as if its own curvature were the unit
+  // pixel stiffness (exactly on a free substrate, where the unit is M's diagonal; 1.35 times
+  // that on a periodic one); where the adhesion lowers that curvature to c in (0, 1), the
+  // one-unknown Newton step r / c is longer, and (1/c - 1) r adds the difference, in the
+  // manner of the one-unknown blocks of an additive Schwarz preconditioner. c is taken at
+  // least smallest_own_curvature, so that the unknowns nearest the instability do not swamp
+  // the direction (the correction is at most 19); an unknown unstable on its own (c <= 0) or
+  // out of the adhesion's reach (c = 1) has none. Never negative, so that M plus it stays
+  // positive definite.
+  static constexpr double smallest_own_curvature = 0.05;
+  double preconditioner_correction(double state) const {
+    const double own = own_curvature(state);
+    if (!(own > 0.0 && own < 1.0)) return 0.0;
+    return 1.0 / (own > smallest_own_curvature ? own : smallest_own_curvature) - 1.0;
+  }
+
+  // Where an unknown at x, with the quadratic part's gradient q there, comes to rest beyond
+  // the instability, the others held, when the objective falls away from the wall
+  // (q + psi'(x) < 0): the root of m'(t) = q + (t - x) + psi'(t), the derivative of the
+  // one-unknown model
   //     m(t) = q (t - x) + (t - x)^2 / 2 + psi(t),
   // on the side where m is convex. m' is decreasing while 1 + psi'' < 0 and convex
   // increasing beyond (psi''' > 0), so that root is its only one above x. Newton's method
@@ -61,7 +80,7 @@ class LocalTerm {
     double t = x - q;
     for (int step = 0; step < 12; ++step) {
       const double s = state(t);
-      const double curvature = 1.0 + curvature_per_state_ * s;
+      const double curvature = own_curvature(s);
       if (!(curvature > 0.0)) break;
       t -= (q + (t - x) + slope_per_state_ * s) / curvature;
     }

@@ -32,11 +32,6 @@ constexpr int max_halvings = 30;
 // negative curvature").
 constexpr double negative_curvature_step = 1.5;
 
-// The smallest own curvature of a free pixel (in units of the pixel stiffness) that the
-// preconditioner's correction for it takes, which caps the correction at 19 times the unit
-// step. 0.01 and 0.05 took the same iterations on the contact-mechanics challenge's scene;
-// the correction matters for the pixels a little off the instability, not at it.
-constexpr double smallest_own_curvature = 0.05;
 
 // Alg. 4: exact step along d (the objective is quadratic), projection onto the bound, the
 // mean restored, then the conjugate direction with beta = r.Hd / d.Hd. The gradient g of a
@@ -147,8 +142,8 @@ void bugnicourt(Formulation &f, Monitor &monitor, bool preconditioned) {
 // step is taken instead. On the contact-mechanics challenge's scene at 1024^2 to 4096^2 this
 // cut the iterations 1.5 to 2.6 times. Along the plain gradient it changed little on nested
 // grids and led one cold solve to a state of much higher energy (docs/performance.md), so
-// there the step stays the safe one. Preconditioned, after a step the bound did not cut, two
-// things treat the pixels near the wall (docs/algorithms.md, "The pixels near the wall"),
+// there the step stays the safe one. Preconditioned, after a step that was not cut (by the
+// bound or by jumps), two things treat the pixels near the wall (docs/algorithms.md, "The pixels near the wall"),
 // which a step along d would settle only over many iterations: the first trial makes those
 // that the adhesion makes unstable on their own jump across the instability, onto the wall
 // where it pulls them in and off it where the elastic field tears them off
@@ -188,32 +183,30 @@ void bugnicourt_separable(Formulation &f, const LocalTerm &psi, Monitor &monitor
   const auto none = [](std::int64_t) { return 0.0; };
   // psi''(x_i) d_i^2: the local term's part of the curvature along the new direction.
   const auto local_curvature = [&](std::int64_t i, double di) { return bend * e[i] * di * di; };
-  // Whether the bound cut the last step; until a step it did not cut, the preconditioner is
-  // the plain one and the trials make no jumps.
+  // Whether the last step was cut (by the bound or by jumps); until a step that was not, the
+  // preconditioner is the plain one and the trials make no jumps.
   bool cut_before = true;
   // The preconditioner's correction for the free pixels' own curvature (docs/algorithms.md,
-  // "The pixels near the wall"): M moves a free pixel along its own residual r_i as if its
-  // own curvature were the unit pixel stiffness; where the adhesion lowers that curvature to
-  // c_i = 1 + psi''(x_i) in (0, 1), the one-pixel Newton step r_i / c_i is longer, and
-  // (1/c_i - 1) r_i adds the difference, as a one-pixel block of an additive Schwarz
-  // preconditioner would. c_i is taken at least smallest_own_curvature, so that the pixels
-  // nearest the instability do not swamp the direction; the unstable ones (c_i <= 0) jump
-  // instead (BugnicourtPasses::trial). Only after a step the bound did not cut: while the
-  // contact set still moves, pixels cross the adhesive zone in a few steps, and the
-  // correction would only lengthen their moves.
+  // "The pixels near the wall"; LocalTerm::preconditioner_correction): longer moves along
+  // their own residuals for the pixels that the adhesion softens, short of the instability.
+  // The unstable ones jump instead (BugnicourtPasses::trial). Only after a step that was not
+  // cut: while the contact set still moves, pixels cross the adhesive zone in a few steps,
+  // and the correction would only lengthen their moves.
   const auto own_correction = [&](std::int64_t i) {
-    const double own = psi.own_curvature(e[i]);
-    if (cut_before || !(x[i] > lower) || !(own > 0.0) || !(own < 1.0)) return 0.0;
-    return 1.0 / (own > smallest_own_curvature ? own : smallest_own_curvature) - 1.0;
+    return x[i] > lower ? psi.preconditioner_correction(e[i]) : 0.0;
   };
+  const auto no_correction = [](std::int64_t) { return 0.0; };
   // The new direction, the descent along it and the local term's curvature there: conjugate
   // to the last direction (product() is H d_old at the iterate it started from,
-  // last_curvature d_old.H d_old), or steepest where that is not positive.
+  // last_curvature d_old.H d_old), or steepest where that is not positive. Preconditioned,
+  // with the correction for the pixels' own curvature after a step that was not cut.
   const auto direct = [&](const Projection &p, double last_curvature) {
-    return preconditioned ? passes.direct_preconditioned(x, gradient, p, product,
-                                                         last_curvature, z.data(), d.data(),
-                                                         local_curvature, own_correction)
-                          : passes.direct(x, gradient, p, d.data(), local_curvature);
+    if (!preconditioned) return passes.direct(x, gradient, p, d.data(), local_curvature);
+    if (cut_before)
+      return passes.direct_preconditioned(x, gradient, p, product, last_curvature, z.data(),
+                                          d.data(), local_curvature, no_correction);
+    return passes.direct_preconditioned(x, gradient, p, product, last_curvature, z.data(),
+                                        d.data(), local_curvature, own_correction);
   };
   // The history's objective needs the gradient: written into the trial array qy, free until
   // the next trial.
@@ -255,9 +248,10 @@ void bugnicourt_separable(Formulation &f, const LocalTerm &psi, Monitor &monitor
     // The change of the objective from x to the trial point x + alpha d (cut and rescaled),
     // which goes into the trial arrays.
     bool cut = false;
-    // Preconditioned, the first trial after a step the bound did not cut also makes the
-    // pixels that strong adhesion makes unstable jump across the instability, onto the wall
-    // or off it (BugnicourtPasses::trial); a retry moves along d alone.
+    // Preconditioned, the first trial after a step that was not cut also makes the pixels
+    // that strong adhesion makes unstable jump across the instability, onto the wall or off
+    // it (BugnicourtPasses::trial); a retry moves along d alone. A trial with jumps counts
+    // as cut, so that the step after it makes none.
     bool jumps = preconditioned && !cut_before;
     const auto trial = [&](double alpha) {
       const Trial t =

@@ -226,11 +226,11 @@ class BugnicourtPasses {
   // evaluated, and quadratic_change gives the change again).
   // With jumps (and no mean constraint), an unknown that the local term makes unstable on its
   // own (LocalTerm::unstable_alone) jumps across the instability instead of moving along d:
-  //  - a snap: free, with its gradient pointing at the bound, it goes onto the bound (a pixel
-  //    near the wall that strong adhesion pulls in);
-  //  - a peel: with its gradient pointing away from the bound, on it or free, it goes where
-  //    it comes to rest beyond the instability, the others held
-  //    (LocalTerm::rest_beyond_instability; a pixel that the elastic field tears off the
+  //  - a snap: free, where the objective falls toward the bound (a positive gradient), it
+  //    goes onto the bound (a pixel near the wall that strong adhesion pulls in);
+  //  - a peel: on the bound or free, where the objective falls away from the bound (a
+  //    negative gradient), it goes where it comes to rest beyond the instability, the others
+  //    held (LocalTerm::rest_beyond_instability; a pixel that the elastic field tears off the
   //    wall);
   // both of which a step along d makes only over many iterations (bugnicourt.cpp). A jump
   // counts as a cut.
