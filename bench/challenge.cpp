@@ -28,6 +28,9 @@
 // nearest pixel on the wall at K, and the median gap of the missing ones in units of rho.
 // It shows how the contact set settles during a solve.
 //
+// With --range-scale S the range is S times the challenge's 2.071 nm (the work of adhesion
+// kept): a variant of the scene whose cohesive zone a grid resolves the better the larger S.
+//
 // With --trace the progress line (iteration, seconds, error) is printed at every iteration of
 // the solves on the system's grid (the solve of --range-continuation included; the coarse
 // levels report none) instead of once a minute.
@@ -35,7 +38,8 @@
 // usage: asperity_challenge [--size N] [--threads T] [--algorithm NAME[:VARIABLE]]
 //                           [--penetration D | --mean-gap G] [--tolerance T]
 //                           [--max-iterations K] [--no-pair] [--estimate]
-//                           [--range-continuation F] [--settling K,K,...] [--trace]
+//                           [--range-continuation F] [--settling K,K,...]
+//                           [--range-scale S] [--trace]
 //                           [--option NAME=VALUE]   (an option of the algorithm: a number,
 //                                                    or else a word; repeatable)
 //        (defaults: 16384, the library's default threads, bugnicourt:gap, 1.5e-6 m, 1e-6,
@@ -78,6 +82,7 @@ struct Options {
   bool pair = true;
   bool estimate = false;  // FFTW_ESTIMATE plans instead of measured ones
   double range_factor = 0.0;  // > 0: a first solve with this multiple of the range
+  double range_scale = 1.0;   // --range-scale: the scene's range in units of the challenge's
   std::vector<std::pair<std::string, std::string>> choices;  // --option NAME=VALUE
   std::vector<double> settling;  // --settling: the iteration counts to compare at
   bool trace = false;            // --trace: the error at every iteration
@@ -136,7 +141,7 @@ void report_settling(const Options &o, asp::Solver &solver, asp::System &system,
       if (converged[i] && !early[i]) {
         ++missing;
         farthest = std::max(farthest, distance[i]);
-        gaps.push_back(system.state().gap[i] / range);
+        gaps.push_back(system.state().gap[i] / (o.range_scale * range));
       }
       if (early[i] && !converged[i]) ++extra;
     }
@@ -183,16 +188,17 @@ int run(const Options &o) {
     bench::challenge_heights(*grid, heights.data());
     system.set_topography(heights.data());
   }
-  system.set_adhesion(work, range);
+  const double rho = o.range_scale * range;
+  system.set_adhesion(work, rho);
   const double pixels = static_cast<double>(grid->n_pixels());
   const double system_bytes = static_cast<double>(asp::field_bytes_in_use() - empty) / pixels;
   const asp::SurfaceStatistics stats =
       asp::surface_statistics(*grid, system.heights().data());
   std::printf("challenge scene: %ld^2 pixels (%.3g nm each), 100 um box, H 0.8, roll-off 20 um, "
               "short cutoff 0.1 um, seed 1: rms height %.4g um, rms slope %.4g, rms curvature "
-              "1/(%.4g nm); E* 25 MPa, w 50 mJ/m^2, rho 2.071 nm; %d threads; made in %.1f s\n",
+              "1/(%.4g nm); E* 25 MPa, w 50 mJ/m^2, rho %.4g nm; %d threads; made in %.1f s\n",
               o.size, 1e9 * box / static_cast<double>(o.size), 1e6 * stats.rms_height,
-              stats.rms_slope, 1e9 / stats.rms_curvature, grid->threads(),
+              stats.rms_slope, 1e9 / stats.rms_curvature, 1e9 * rho, grid->threads(),
               bench::seconds_since(start));
   std::fflush(stdout);
 
@@ -218,17 +224,17 @@ int run(const Options &o) {
   const double target = by_mean_gap ? o.mean_gap : o.penetration;
   std::int64_t first_iterations = 0;
   if (o.range_factor > 0.0) {
-    system.set_adhesion(work, o.range_factor * range);
+    system.set_adhesion(work, o.range_factor * rho);
     solver.set_option("tolerance", 1e-3);
     solver.solve(system, control, target);
     const asp::SolveReport &first = solver.report();
     first_iterations = first.iterations;
     std::printf("range %.4g nm, tolerance 1e-3: %s after %lld iterations in %.1f s; contact "
                 "%.4f %%\n",
-                1e9 * o.range_factor * range, asp::termination_name(first.termination),
+                1e9 * o.range_factor * rho, asp::termination_name(first.termination),
                 static_cast<long long>(first.iterations), first.seconds,
                 100.0 * system.contact_fraction());
-    system.set_adhesion(work, range);
+    system.set_adhesion(work, rho);
     solver.set_option("tolerance", o.tolerance);
   }
   solver.solve(system, control, target);
@@ -271,7 +277,8 @@ int usage(const char *program) {
   std::fprintf(stderr,
                "usage: %s [--size N] [--threads T] [--algorithm NAME[:VARIABLE]] "
                "[--penetration D | --mean-gap G] [--tolerance T] [--max-iterations K] [--no-pair] "
-               "[--estimate] [--range-continuation F] [--settling K,K,...] [--trace] "
+               "[--estimate] [--range-continuation F] [--settling K,K,...] [--range-scale S] "
+               "[--trace] "
                "[--option NAME=VALUE]\n",
                program);
   return 2;
@@ -303,6 +310,9 @@ int main(int argc, char **argv) {
       o.max_iterations = std::strtod(argv[++i], nullptr);
     } else if (arg == "--no-pair") {
       o.pair = false;
+    } else if (arg == "--range-scale" && has_value) {
+      o.range_scale = std::strtod(argv[++i], nullptr);
+      if (!(o.range_scale > 0.0 && std::isfinite(o.range_scale))) return usage(argv[0]);
     } else if (arg == "--trace") {
       o.trace = true;
     } else if (arg == "--estimate") {
