@@ -32,7 +32,6 @@ constexpr int max_halvings = 30;
 // negative curvature").
 constexpr double negative_curvature_step = 1.5;
 
-
 // Alg. 4: exact step along d (the objective is quadratic), projection onto the bound, the
 // mean restored, then the conjugate direction with beta = r.Hd / d.Hd. The gradient g of a
 // step the bound did not cut follows from the Hessian product already made for the step
@@ -143,13 +142,13 @@ void bugnicourt(Formulation &f, Monitor &monitor, bool preconditioned) {
 // cut the iterations 1.5 to 2.6 times. Along the plain gradient it changed little on nested
 // grids and led one cold solve to a state of much higher energy (docs/performance.md), so
 // there the step stays the safe one. Preconditioned, after a step that was not cut (by the
-// bound or by jumps), two things treat the pixels near the wall (docs/algorithms.md, "The pixels near the wall"),
-// which a step along d would settle only over many iterations: the first trial makes those
-// that the adhesion makes unstable on their own jump across the instability, onto the wall
-// where it pulls them in and off it where the elastic field tears them off
-// (BugnicourtPasses::trial), and the preconditioner is corrected for the free pixels' own
-// curvature (own_correction, below). The conjugate direction
-// uses beta = r.Hd / d.Hd (H at the iterate the step started from), restarting where that
+// bound or by jumps), two things treat the pixels near the wall, which a step along d would
+// settle only over many iterations (docs/algorithms.md, "The pixels near the wall"): the
+// first trial makes those that the adhesion makes unstable on their own jump across the
+// instability, onto the wall where it pulls them in and off it where the elastic field tears
+// them off (BugnicourtPasses::trial), and the preconditioner is corrected for the free
+// pixels' own curvature (own_correction, below). The conjugate direction uses
+// beta = r.Hd / d.Hd (H at the iterate the step started from), restarting where that
 // curvature is not positive.
 // Q's gradient q is followed from Q's Hessian product as in the quadratic case, and the local
 // term is evaluated element by element (one exponential per unknown, its state, gives psi,
@@ -195,7 +194,6 @@ void bugnicourt_separable(Formulation &f, const LocalTerm &psi, Monitor &monitor
   const auto own_correction = [&](std::int64_t i) {
     return x[i] > lower ? psi.preconditioner_correction(e[i]) : 0.0;
   };
-  const auto no_correction = [](std::int64_t) { return 0.0; };
   // The new direction, the descent along it and the local term's curvature there: conjugate
   // to the last direction (product() is H d_old at the iterate it started from,
   // last_curvature d_old.H d_old), or steepest where that is not positive. Preconditioned,
@@ -204,7 +202,7 @@ void bugnicourt_separable(Formulation &f, const LocalTerm &psi, Monitor &monitor
     if (!preconditioned) return passes.direct(x, gradient, p, d.data(), local_curvature);
     if (cut_before)
       return passes.direct_preconditioned(x, gradient, p, product, last_curvature, z.data(),
-                                          d.data(), local_curvature, no_correction);
+                                          d.data(), local_curvature, none);
     return passes.direct_preconditioned(x, gradient, p, product, last_curvature, z.data(),
                                         d.data(), local_curvature, own_correction);
   };

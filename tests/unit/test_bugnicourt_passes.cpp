@@ -412,6 +412,7 @@ TEST(LocalTerm, SkipsTheExponentialOnlyWhereTheSlopeIsBelowTwoToTheMinusSixty) {
 // of the root, a few eps of the largest term in all (8 eps bounds it; measured at most 4 eps
 // over many more cases).
 TEST(LocalTerm, RestBeyondTheInstabilityIsTheRootOfTheModelsSlope) {
+  int cases = 0;
   for (double work : {0.5, 1.0}) {
     for (double range : {0.1, 0.2}) {
       const asp::ExponentialPotential potential{work, range};
@@ -432,10 +433,14 @@ TEST(LocalTerm, RestBeyondTheInstabilityIsTheRootOfTheModelsSlope) {
               << work << " " << range << " " << x << " " << pull;
           EXPECT_GT(psi.own_curvature(et), 0.0) << work << " " << range << " " << x;
           EXPECT_GT(t, x);
+          ++cases;
         }
       }
     }
   }
+  // Every start is unstable (the least, 0.2 from the wall with the weaker work and the
+  // shorter range: 1 + psi'' = 1 - 50 e^-2 = -5.8): 12 starts, 3 pulls each.
+  EXPECT_EQ(cases, 36);
 }
 
 // The preconditioner's correction for an unknown's own curvature c = 1 + psi'': none out of
