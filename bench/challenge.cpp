@@ -17,10 +17,6 @@
 // and the solve's iterations, time, time per iteration in FFT pairs, error, contact and
 // attractive fractions, the energy, and how it ended.
 //
-// With --range-continuation F the solve is preceded by one of the same scene with the range
-// F rho, to the tolerance 1e-3, from whose state the solve with rho starts; both are printed,
-// and the iterations of the two together.
-//
 // With --settling K,K,... the scene is solved again from rest after the solve, once for each
 // K, stopped after K iterations, and the contact set there is compared with the converged
 // one's: the pixels on the wall in one and not in the other, how far (in pixels, the
@@ -30,16 +26,17 @@
 //
 // With --range-scale S the range is S times the challenge's 2.071 nm (the work of adhesion
 // kept): a variant of the scene whose cohesive zone a grid resolves the better the larger S.
+// (bugnicourt's default continuation in the range, its option range_continuation, is set
+// with --option range_continuation=F, 0 for none.)
 //
 // With --trace the progress line (iteration, seconds, error) is printed at every iteration of
-// the solves on the system's grid (the solve of --range-continuation included; the coarse
+// the solve on the system's grid (both stages of a continuation in the range; the coarse
 // levels report none) instead of once a minute.
 //
 // usage: asperity_challenge [--size N] [--threads T] [--algorithm NAME[:VARIABLE]]
 //                           [--penetration D | --mean-gap G] [--tolerance T]
 //                           [--max-iterations K] [--no-pair] [--estimate]
-//                           [--range-continuation F] [--settling K,K,...]
-//                           [--range-scale S] [--trace]
+//                           [--settling K,K,...] [--range-scale S] [--trace]
 //                           [--option NAME=VALUE]   (an option of the algorithm: a number,
 //                                                    or else a word; repeatable)
 //        (defaults: 16384, the library's default threads, bugnicourt:gap, 1.5e-6 m, 1e-6,
@@ -81,7 +78,6 @@ struct Options {
   double max_iterations = 1e5;
   bool pair = true;
   bool estimate = false;  // FFTW_ESTIMATE plans instead of measured ones
-  double range_factor = 0.0;  // > 0: a first solve with this multiple of the range
   double range_scale = 1.0;   // --range-scale: the scene's range in units of the challenge's
   std::vector<std::pair<std::string, std::string>> choices;  // --option NAME=VALUE
   std::vector<double> settling;  // --settling: the iteration counts to compare at
@@ -222,21 +218,6 @@ int run(const Options &o) {
   const bool by_mean_gap = o.mean_gap > 0.0;
   const asp::Control control = by_mean_gap ? asp::Control::mean_gap : asp::Control::penetration;
   const double target = by_mean_gap ? o.mean_gap : o.penetration;
-  std::int64_t first_iterations = 0;
-  if (o.range_factor > 0.0) {
-    system.set_adhesion(work, o.range_factor * rho);
-    solver.set_option("tolerance", 1e-3);
-    solver.solve(system, control, target);
-    const asp::SolveReport &first = solver.report();
-    first_iterations = first.iterations;
-    std::printf("range %.4g nm, tolerance 1e-3: %s after %lld iterations in %.1f s; contact "
-                "%.4f %%\n",
-                1e9 * o.range_factor * rho, asp::termination_name(first.termination),
-                static_cast<long long>(first.iterations), first.seconds,
-                100.0 * system.contact_fraction());
-    system.set_adhesion(work, rho);
-    solver.set_option("tolerance", o.tolerance);
-  }
   solver.solve(system, control, target);
   const double solve_bytes = static_cast<double>(asp::field_bytes_peak() - before) / pixels;
 
@@ -251,9 +232,6 @@ int run(const Options &o) {
               static_cast<long long>(r.transforms), r.seconds, per_iteration);
   if (pair > 0.0) std::printf(" (%.2f FFT pairs)", per_iteration / pair);
   std::printf("; error %.3e\n", r.error);
-  if (o.range_factor > 0.0)
-    std::printf("with the solve at %g rho: %lld iterations\n", o.range_factor,
-                static_cast<long long>(first_iterations + r.iterations));
   std::printf("contact %.4f %%, attractive %.4f %%, mean pressure %.4g kPa, mean gap %.4g nm, "
               "penetration %.4g um\n",
               100.0 * system.contact_fraction(), 100.0 * system.attractive_fraction(),
@@ -277,7 +255,7 @@ int usage(const char *program) {
   std::fprintf(stderr,
                "usage: %s [--size N] [--threads T] [--algorithm NAME[:VARIABLE]] "
                "[--penetration D | --mean-gap G] [--tolerance T] [--max-iterations K] [--no-pair] "
-               "[--estimate] [--range-continuation F] [--settling K,K,...] [--range-scale S] "
+               "[--estimate] [--settling K,K,...] [--range-scale S] "
                "[--trace] "
                "[--option NAME=VALUE]\n",
                program);
@@ -317,9 +295,6 @@ int main(int argc, char **argv) {
       o.trace = true;
     } else if (arg == "--estimate") {
       o.estimate = true;
-    } else if (arg == "--range-continuation" && has_value) {
-      o.range_factor = std::strtod(argv[++i], nullptr);
-      if (!(o.range_factor > 0.0 && std::isfinite(o.range_factor))) return usage(argv[0]);
     } else if (arg == "--settling" && has_value) {
       std::stringstream list(argv[++i]);
       for (std::string count; std::getline(list, count, ',');) {
@@ -336,9 +311,7 @@ int main(int argc, char **argv) {
       return usage(argv[0]);
     }
   }
-  // The re-solves of --settling start from rest, as the solve without a continuation does.
   if (o.size < 2 || o.threads < 0 || !std::isfinite(o.penetration) ||
-      (o.range_factor > 0.0 && !o.settling.empty()) ||
       !(o.mean_gap >= 0.0 && std::isfinite(o.mean_gap)))
     return usage(argv[0]);
   try {

@@ -822,6 +822,34 @@ ASP_EXPORT int asp_solver_describe(const asp_solver *solver, char *buffer, int64
  *                     history's first row holds the coarse levels' already); the progress
  *                     callback is called on the system's grid only. A distributed grid's
  *                     coarse grids are distributed over the same processes;
+ *   "range_continuation"  real: 0, a factor F >= 1, or the string "auto"; default "auto"
+ *                     for "bugnicourt", 0 for the others: with the hard wall and
+ *                     exponential adhesion (asp_system_set_adhesion), a solve whose state
+ *                     carries no pressure first solves the same scene with the range F rho
+ *                     (the work of adhesion kept: a cohesive zone F^2 times longer), after
+ *                     the coarse levels and from their state, to the tolerance 1e-2 (or
+ *                     the solve's, if looser), then with rho from that state to the
+ *                     solve's tolerance. On a grid that does not resolve the cohesive zone
+ *                     (asp_system_check_resolution) the contact lines otherwise settle a pixel
+ *                     at a time; this cut the iterations of the contact-mechanics
+ *                     challenge's scene at 4096^2 by about a third (docs/performance.md).
+ *                     Adhesive contact has many stable states, and the one reached may
+ *                     differ from a plain solve's (lower in energy on that scene; higher by
+ *                     1.5e-3 on one test scene with F = 1.75). "auto" takes
+ *                     F = sqrt(2 / zone), the factor that makes the zone 2 pixels long,
+ *                     where the zone is at most half a pixel, and none otherwise, with any
+ *                     other interaction, and under a mean pressure <= 0; it reads back as
+ *                     -1 and "auto" as "levels" does. 0 and 1 are none. The system's
+ *                     interaction is its own again when the solve returns, however it
+ *                     ends. An explicit F with another interaction is refused by
+ *                     asp_solver_solve and asp_solver_supports with ASP_ERR_UNSUPPORTED, a
+ *                     value in (0, 1) with ASP_ERR_INVALID_ARGUMENT, naming the option.
+ *                     The report, the history and the progress callback count the
+ *                     iterations, evaluations and transforms of both stages: the history's
+ *                     row at the first stage's last iteration is the second stage's
+ *                     starting point, measured with rho (the callback saw that iteration
+ *                     once, with the first stage's error), and max_iterations bounds both
+ *                     stages together. A cancel in the first stage ends the solve;
  * and its own options (asp_solver_describe lists them). Integer options take whole numbers
  * given as doubles. An unknown name or a value outside the range is refused with
  * ASP_ERR_INVALID_ARGUMENT, naming the option and listing the valid names or the range;

@@ -77,6 +77,8 @@ struct AlgorithmSpec {
   std::vector<OptionSpec> options;  // every option, the common ones first
   // The default of the common option "levels" (levels_auto for "auto").
   double default_levels = 0.0;
+  // The default of the common option "range_continuation" (continuation_auto for "auto").
+  double default_range_continuation = 0.0;
   // Runs the algorithm from the system's state and leaves its result there (see conclude()).
   void (*run)(System &system, Control control, double value, const OptionValues &options,
               Monitor &monitor);

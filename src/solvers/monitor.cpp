@@ -27,15 +27,37 @@ double Monitor::seconds() const {
 }
 
 void Monitor::record(std::int64_t iteration, const IterationState &state, double elapsed,
-                     double error, double objective, double contact_fraction) {
-  history_.push_back({static_cast<double>(iteration), static_cast<double>(state.evaluations),
+                     double error, double objective, double contact_fraction,
+                     bool replace_last) {
+  if (replace_last && !history_.empty()) history_.pop_back();
+  history_.push_back({static_cast<double>(iteration),
+                      static_cast<double>(state.evaluations + prior_evaluations_),
                       static_cast<double>(state.transforms + prior_transforms_), elapsed,
                       error, objective, contact_fraction});
 }
 
-bool Monitor::should_stop(std::int64_t iteration, const IterationState &state) {
+void Monitor::begin_first_stage(double tolerance) {
+  settings_.tolerance = tolerance;
+  first_stage_ = true;
+}
+
+void Monitor::continue_with_next_stage(double tolerance) {
+  settings_.tolerance = tolerance;
+  first_stage_ = false;
+  prior_iterations_ = iterations_;
+  prior_evaluations_ = evaluations_;
+  prior_transforms_ = transforms_;
+  stage_starts_ = true;
+  termination_ = Termination::iteration_limit;
+}
+
+bool Monitor::should_stop(std::int64_t stage_iteration, const IterationState &state) {
+  // The iteration of the solve; the stall window counts those of the stage.
+  const std::int64_t iteration = prior_iterations_ + stage_iteration;
+  const bool stage_start = stage_starts_;
+  stage_starts_ = false;
   iterations_ = iteration;
-  evaluations_ = state.evaluations;
+  evaluations_ = state.evaluations + prior_evaluations_;
   transforms_ = state.transforms + prior_transforms_;
   // An error is a magnitude: one that is not finite, or negative (a maximum over no finite
   // value), says that the iterate broke down.
@@ -50,7 +72,8 @@ bool Monitor::should_stop(std::int64_t iteration, const IterationState &state) {
       const bool earlier = !history_.empty();
       record(iteration, state, seconds(), error_,
              earlier ? history_.back()[static_cast<int>(HistoryColumn::objective)] : 0.0,
-             earlier ? history_.back()[static_cast<int>(HistoryColumn::contact_fraction)] : 0.0);
+             earlier ? history_.back()[static_cast<int>(HistoryColumn::contact_fraction)] : 0.0,
+             stage_start);
     }
     return true;
   }
@@ -59,8 +82,9 @@ bool Monitor::should_stop(std::int64_t iteration, const IterationState &state) {
   const bool timed = settings_.record_history || settings_.progress != nullptr;
   const double elapsed = timed ? seconds() : 0.0;
   if (settings_.record_history)
-    record(iteration, state, elapsed, state.error, state.objective, state.contact_fraction);
-  bool cancel = settings_.progress != nullptr &&
+    record(iteration, state, elapsed, state.error, state.objective, state.contact_fraction,
+           stage_start);
+  bool cancel = settings_.progress != nullptr && !stage_start &&
                 settings_.progress(iteration, elapsed, state.error, settings_.progress_data) != 0;
   if (settings_.reductions != nullptr) {
     double asked = cancel ? 1.0 : 0.0;
@@ -74,8 +98,9 @@ bool Monitor::should_stop(std::int64_t iteration, const IterationState &state) {
     termination_ = Termination::separated;
     return true;
   }
-  // A state that met the tolerance is converged even if the callback also asked to stop.
-  if (state.error <= settings_.tolerance) {
+  // A state that met the tolerance is converged even if the callback also asked to stop,
+  // but for a first stage's: converged, it would only end that stage.
+  if (state.error <= settings_.tolerance && !(cancel && first_stage_)) {
     termination_ = Termination::converged;
     return true;
   }
@@ -87,7 +112,7 @@ bool Monitor::should_stop(std::int64_t iteration, const IterationState &state) {
     termination_ = Termination::iteration_limit;
     return true;
   }
-  if (iteration == 0 || state.error < 0.99 * stall_reference_) {
+  if (stage_iteration == 0 || state.error < 0.99 * stall_reference_) {
     stall_reference_ = state.error;
     stall_since_ = iteration;
   } else if (settings_.stall_window > 0 && iteration - stall_since_ >= settings_.stall_window) {

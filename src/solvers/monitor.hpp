@@ -83,6 +83,19 @@ class Monitor {
   // Transforms made for this solve before its first iteration (the coarse levels of nested
   // grids): counted in every row of the history and in transforms(), as the solve's work.
   void count_prior_transforms(std::int64_t transforms) { prior_transforms_ = transforms; }
+  // A solve in stages on the system's grid (range_continuation.hpp): the first stage, about
+  // to run, stops at `tolerance`. A cancel asked at an iteration that also meets it stops the
+  // solve (it would only stop the stage).
+  void begin_first_stage(double tolerance);
+  // The stage that ran is over and the next, to `tolerance`, starts from its state. The next
+  // stage's iterations, evaluations and transforms continue the counts; its starting point
+  // is numbered as the stage's last iteration and takes that iteration's row of the history
+  // (the same state, measured against the next stage's objective), so that a history still
+  // has iterations() + 1 rows; the progress callback, which saw that iteration, is not
+  // called for it again. max_iterations bounds the stages together; the stall window starts
+  // again. Only a stage that ended short of a breakdown, a cancel or the iteration limit is
+  // continued (the caller's choice); the termination is cleared.
+  void continue_with_next_stage(double tolerance);
 
   Termination termination() const { return termination_; }
   std::int64_t iterations() const { return iterations_; }
@@ -96,7 +109,7 @@ class Monitor {
 
  private:
   void record(std::int64_t iteration, const IterationState &state, double elapsed, double error,
-              double objective, double contact_fraction);
+              double objective, double contact_fraction, bool replace_last);
 
   MonitorSettings settings_;
   std::chrono::steady_clock::time_point start_;
@@ -105,6 +118,11 @@ class Monitor {
   std::int64_t evaluations_ = 0;
   std::int64_t transforms_ = 0;
   std::int64_t prior_transforms_ = 0;
+  // The work of the stages before this one (continue_with_next_stage).
+  std::int64_t prior_iterations_ = 0;
+  std::int64_t prior_evaluations_ = 0;
+  bool stage_starts_ = false;  // the next should_stop is a later stage's starting point
+  bool first_stage_ = false;   // a stage before the last runs
   // The last finite error seen; DBL_MAX until there is one (a start that is not finite).
   double error_ = std::numeric_limits<double>::max();
   double stall_reference_ = 0.0;  // the error the next iterations must beat by 1 %

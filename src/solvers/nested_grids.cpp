@@ -46,8 +46,6 @@ std::int64_t nested_levels(const System &system, double levels) {
                   obstacle);
 }
 
-namespace {
-
 bool carries_pressure(const System &system) {
   const double *p = system.state().pressure.data();
   const double count =
@@ -55,6 +53,8 @@ bool carries_pressure(const System &system) {
                  [&](std::int64_t i) { return p[i] != 0.0 ? 1.0 : 0.0; });
   return count > 0.0;
 }
+
+namespace {
 
 // Solves `fine`'s problem on `levels` coarser grids, the coarsest first, and prolongs the
 // result onto `fine`'s state. `depth` is the level of `fine` (0 the system's own grid).

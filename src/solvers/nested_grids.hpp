@@ -31,6 +31,11 @@ constexpr std::int64_t smallest_side = 8;
 // levels (see solve_coarse_levels).
 std::int64_t nested_levels(const System &system, double levels);
 
+// Whether the system's state carries pressure anywhere: a solved or prolonged state, not
+// a cold one (a fresh system, after a reset or a new topography). Collective on a
+// distributed grid.
+bool carries_pressure(const System &system);
+
 // The coarse levels' work, for the report: their iterations, and their transforms weighted
 // by their grid's pixels over the system's (the cost in transforms of the system's size).
 struct CoarseWork {

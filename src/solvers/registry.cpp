@@ -10,6 +10,7 @@
 #include "solvers/lbfgsb.hpp"
 #include "solvers/nested_grids.hpp"
 #include "solvers/polonsky_keer.hpp"
+#include "solvers/range_continuation.hpp"
 #include "solvers/unconstrained_algorithms.hpp"
 
 namespace asp {
@@ -31,6 +32,11 @@ std::vector<OptionSpec> common_options() {
        "nested grids: solve first on this many grids coarser by 2 per axis, from the "
        "coarsest up, when the state carries no pressure (0: none; \"auto\": halve while "
        "both sides stay at least 64 pixels)"},
+      {"range_continuation", OptionType::real, 0, 0, 1e6, false, {},
+       "with exponential adhesion, solve a cold start first with the range times this "
+       "factor (>= 1) to 1e-2, then with the scene's own range (0: none; \"auto\": the "
+       "factor that makes the cohesive zone 2 pixels long, where the grid does not resolve "
+       "it)"},
   };
 }
 
@@ -39,7 +45,10 @@ std::vector<OptionSpec> common_options() {
 const std::vector<std::pair<std::string, double>> &option_words(const std::string &name) {
   static const std::vector<std::pair<std::string, double>> none;
   static const std::vector<std::pair<std::string, double>> levels = {{"auto", levels_auto}};
-  return name == "levels" ? levels : none;
+  static const std::vector<std::pair<std::string, double>> continuation = {
+      {"auto", continuation_auto}};
+  if (name == "levels") return levels;
+  return name == "range_continuation" ? continuation : none;
 }
 
 namespace {
@@ -48,6 +57,8 @@ AlgorithmSpec with_common_options(AlgorithmSpec spec) {
   std::vector<OptionSpec> options = common_options();
   for (OptionSpec &option : options)
     if (option.name == "levels") option.default_value = spec.default_levels;
+    else if (option.name == "range_continuation")
+      option.default_value = spec.default_range_continuation;
   options.insert(options.end(), spec.options.begin(), spec.options.end());
   spec.options = std::move(options);
   return spec;

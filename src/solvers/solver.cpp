@@ -176,6 +176,9 @@ void Solver::solve(System &system, Control control, double value) {
   ContactState start;
   if (keep_start) start = system.state();
   const std::int64_t levels = nested_levels(system, options_.number("levels"));
+  // Asked of the state before the coarse levels give it pressure: a cold start.
+  const double range_factor =
+      continuation_factor(system, control, value, options_.number("range_continuation"));
   CoarseWork coarse;
   try {
     coarse = solve_coarse_levels(algorithm_, options_, system, control, value, levels, settings);
@@ -185,7 +188,12 @@ void Solver::solve(System &system, Control control, double value) {
     // The coarse levels' transforms, weighted by their share of the pixels, are the solve's
     // work: the history's rows and the report count them.
     monitor.count_prior_transforms(static_cast<std::int64_t>(std::ceil(coarse.transforms)));
-    algorithm_.run(system, control, value, options_, monitor);
+    // The first stage of a continuation in the range, on the system's grid: its iterations
+    // are the solve's, and so is its state (a cold start's, like the prolonged one).
+    if (range_factor > 1.0) system.set_state_held_by_solve(true);
+    if (solve_with_longer_range(algorithm_, options_, system, control, value, range_factor,
+                                settings.tolerance, monitor))
+      algorithm_.run(system, control, value, options_, monitor);
   } catch (...) {
     if (keep_start) {
       system.state() = start;

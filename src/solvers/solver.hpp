@@ -12,6 +12,7 @@
 #include "formulations/formulation.hpp"
 #include "solvers/monitor.hpp"
 #include "solvers/nested_grids.hpp"
+#include "solvers/range_continuation.hpp"
 #include "solvers/registry.hpp"
 
 namespace asp {
@@ -40,6 +41,7 @@ class Solver {
   void check_supported(const System &system, Control control) const {
     check_request(algorithm_, options_, system, control);
     nested_levels(system, options_.number("levels"));  // refuses levels the grid cannot take
+    check_range_continuation(system, options_.number("range_continuation"));
   }
 
   // Options by name; unknown names, wrong types and values out of range are refused with

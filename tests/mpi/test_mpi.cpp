@@ -6,8 +6,8 @@
 //     count, on even and odd grids, on a grid with fewer rows than processes and on one with
 //     fewer spectral columns (which the processes hold of the transposed spectrum);
 //   - solvers: every algorithm (and the options of the iterations against the grid: pk's
-//     restart rule, the preconditioners, nested grids), on a rough non-adhesive and a rough
-//     adhesive scene, on an even
+//     restart rule, the preconditioners, nested grids, bugnicourt's range continuation), on a
+//     rough non-adhesive and a rough adhesive scene, on an even
 //     and an odd grid, on the periodic and (where it takes it) the free substrate, gives the serial pressure and gap to 1e-10 of their largest magnitude,
 //     and the serial scalars to 1e-10 relative. The processes' sums are added in a different
 //     order than the serial ones and FFTW-MPI rounds differently from serial FFTW: rounding
@@ -155,7 +155,9 @@ void generators_give_the_serial_surface(int64_t nx, int64_t ny) {
 
 // ---- solvers -------------------------------------------------------------------------------
 
-enum class Wall { hard, adhesive, soft };
+// adhesive: a cohesive zone of 3.5 pixels (resolved); unresolved: of 0.16 pixel, where
+// bugnicourt's range continuation ("auto") acts.
+enum class Wall { hard, adhesive, unresolved, soft };
 
 struct Case {
   const char *algorithm;
@@ -197,6 +199,8 @@ Outcome solve(asp_grid *grid, int64_t count, const std::vector<double> &heights,
   std::vector<double> h = heights;
   require_ok(asp_system_set_topography(system, data_or_null(h), count), "set_topography");
   if (c.wall == Wall::adhesive) require_ok(asp_system_set_adhesion(system, 0.02, 0.3), "adhesion");
+  if (c.wall == Wall::unresolved)
+    require_ok(asp_system_set_adhesion(system, 5e-4, 0.01), "adhesion");
   if (c.wall == Wall::soft)
     require_ok(asp_system_set_soft_wall(system, 0.05, 0.3, 0.01, 0.3), "soft wall");
   require_ok(asp_solver_create(c.algorithm, &solver), "asp_solver_create");
@@ -244,9 +248,10 @@ void solver_gives_the_serial_result(const Case &c, int64_t nx, int64_t ny) {
   Grids g(nx, ny);
   const std::string name = std::string(c.algorithm) +
                            (*c.variable ? std::string("/") + c.variable : "") +
-                           (c.wall == Wall::hard       ? " hard"
-                            : c.wall == Wall::adhesive ? " adhesive"
-                                                       : " soft") +
+                           (c.wall == Wall::hard         ? " hard"
+                            : c.wall == Wall::adhesive   ? " adhesive"
+                            : c.wall == Wall::unresolved ? " unresolved"
+                                                         : " soft") +
                            (c.free_substrate ? " free" : "") + c.options + " " +
                            std::to_string(nx) + "x" + std::to_string(ny);
   const std::vector<double> whole = rough(g.serial, nx * ny, 7);
@@ -280,9 +285,11 @@ void solver_gives_the_serial_result(const Case &c, int64_t nx, int64_t ny) {
         1e-10 * std::fabs(serial.scalars[k]) + 1e-300)
       fail(name + ": scalar " + std::to_string(k) + " " + std::to_string(serial.scalars[k]) +
            " vs " + std::to_string(distributed.scalars[k]));
-  // Nested grids: the same levels solved, with the same iterations on each (a distributed
-  // solve that skipped its levels would count other transforms).
-  if (std::strstr(c.options, "levels=") != nullptr &&
+  // Nested grids and the range continuation: the same levels and stages solved, with the
+  // same iterations on each (a distributed solve that skipped its levels or its first stage
+  // would count other transforms).
+  if ((std::strstr(c.options, "levels=") != nullptr ||
+       std::strstr(c.options, "range_continuation=") != nullptr) &&
       std::fabs(serial.transforms - distributed.transforms) > 1e-12 * serial.transforms)
     fail(name + ": transforms " + std::to_string(serial.transforms) + " vs " +
          std::to_string(distributed.transforms));
@@ -465,6 +472,39 @@ void nested_levels_are_refused_where_the_grid_cannot_be_halved() {
   asp_system_destroy(system);
 }
 
+// ---- the range continuation ---------------------------------------------------------------
+// On the unresolved adhesive scene bugnicourt's first stage with the range times F (explicit,
+// and "auto": sqrt(2 / zone), decided alike on every process) is solved distributed as it is
+// serially (solver_gives_the_serial_result: the fields to 1e-10, the transforms of both
+// stages), on an even and an odd grid, and with a coarse level before it. And the stage ran:
+// the serial solve with it differs in its transforms from the one without.
+void range_continuation_gives_the_serial_result() {
+  const Case cases[] = {
+      {"bugnicourt", "gap", Wall::unresolved, ASP_CONTROL_PENETRATION, false,
+       " range_continuation=4"},
+      {"bugnicourt", "gap", Wall::unresolved, ASP_CONTROL_PENETRATION, false,
+       " range_continuation=auto"},
+      {"bugnicourt", "gap", Wall::unresolved, ASP_CONTROL_PENETRATION, false,
+       " range_continuation=0"},
+  };
+  for (const Case &c : cases) {
+    solver_gives_the_serial_result(c, 64, 64);
+    solver_gives_the_serial_result(c, 45, 37);
+  }
+  Case nested = cases[0];
+  nested.options = " range_continuation=4 levels=1";
+  solver_gives_the_serial_result(nested, 64, 64);
+
+  Grids g(64, 64);
+  const std::vector<double> whole = rough(g.serial, 64 * 64, 7);
+  const double range =
+      *std::max_element(whole.begin(), whole.end()) - *std::min_element(whole.begin(), whole.end());
+  const Outcome continued = solve(g.serial, 64 * 64, whole, cases[1], 0.15 * range);
+  const Outcome plain = solve(g.serial, 64 * 64, whole, cases[2], 0.15 * range);
+  if (continued.transforms == plain.transforms && continued.iterations == plain.iterations)
+    fail("range_continuation auto did nothing on the unresolved scene");
+}
+
 int main(int argc, char **argv) {
   MPI_Init(&argc, &argv);
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
@@ -485,6 +525,7 @@ int main(int argc, char **argv) {
   generators_give_the_serial_surface(2, 45);
   bad_input_on_one_process_fails_on_all();
   nested_levels_are_refused_where_the_grid_cannot_be_halved();
+  range_continuation_gives_the_serial_result();
 
   const Case cases[] = {
       {"pk", "", Wall::hard, ASP_CONTROL_MEAN_PRESSURE},

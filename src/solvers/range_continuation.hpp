@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// Continuation in the range of the exponential adhesion: before the solve of an adhesive
+// scene whose grid does not resolve the cohesive zone, the same scene is solved on the same
+// grid with the range F rho (the work of adhesion kept), to a loose tolerance, and the solve
+// with the scene's own range starts from that state.
+//
+// Why: below about one pixel of cohesive zone ((pi/4) E* rho^2/w, physics/resolution.hpp) a
+// pixel next to a contact is unstable on its own, and the contact lines settle a pixel at a
+// time on the finest grid, so that the iterations grow with the grid. With the range F rho
+// the zone is F^2 times longer; where it spans a couple of pixels the contact lines move
+// together, and the iterations do not grow with the grid (docs/performance.md, "The growth
+// and the cohesive zone"). From that state the scene's own range only has the short way back
+// to go. The option "range_continuation" says F (0: none; "auto", the default of bugnicourt:
+// the F that makes the zone continuation_zone pixels long, where the grid does not resolve
+// it, and none where it does).
+#pragma once
+
+#include "physics/system.hpp"
+#include "solvers/algorithm.hpp"
+#include "solvers/monitor.hpp"
+
+namespace asp {
+
+// The option's value that stands for "auto".
+constexpr double continuation_auto = -1.0;
+// The cohesive zone, in pixels, that auto gives the first stage: measured on the challenge's
+// scene at 1024^2 to 4096^2 (docs/performance.md), where 2 pixels took the fewest iterations
+// together and kept them from growing with the grid.
+constexpr double continuation_zone = 2.0;
+// Auto acts where the zone is at most this many pixels (a factor of at least 2). Nearer to
+// resolved, a factor below 2 changes the scene too little to save iterations (a 64^2 test
+// scene with a zone of 0.65 pixels: 65 iterations against 55) and led one 128^2 test scene
+// to another metastable state, 1.5e-3 higher in energy (test_range_continuation.cpp).
+constexpr double continuation_largest_zone = 0.5;
+// The first stage's tolerance (or the solve's own if looser): its state is a start, and one
+// tighter than this spent iterations the second stage did not get back on that scene.
+constexpr double continuation_tolerance = 1e-2;
+
+// Refuses an option's value that a solve of the system cannot take: an explicit F >= 1 where
+// the interaction is not the exponential adhesion, with Error(unsupported) naming the
+// option; a value in (0, 1), with Error(invalid_argument). Changes nothing.
+void check_range_continuation(const System &system, double option);
+
+// The factor F of the range for the first stage of a solve of the system under the control,
+// from the option's value (checked as above): 0 for none. An explicit F >= 1 is taken as it
+// is (1: none). Auto gives sqrt(continuation_zone / zone) where the zone is at most
+// continuation_largest_zone pixels, and 0 where it is longer, where the interaction is
+// another, and under a mean pressure <= 0 (a
+// tensile load that the longer range, with its weaker largest tension w/(F rho), might not
+// hold). A state that carries pressure (a warm start) takes none either, whatever F: the
+// continuation, like the nested grids, is for a cold solve. Collective on a distributed grid.
+double continuation_factor(const System &system, Control control, double value, double option);
+
+// Runs the algorithm on the system with the range F rho, to continuation_tolerance, counting
+// its work in the monitor, and leaves the monitor ready for the solve with the scene's own
+// range (Monitor::continue_with_next_stage, to `tolerance`) unless the stage was cancelled or
+// reached the iteration limit (then the solve is over: returns false). The system's
+// interaction is restored on every path, exceptions included. Does nothing and returns true
+// when F <= 1.
+bool solve_with_longer_range(const AlgorithmSpec &algorithm, const OptionValues &options,
+                             System &system, Control control, double value, double factor,
+                             double tolerance, Monitor &monitor);
+
+}  // namespace asp
