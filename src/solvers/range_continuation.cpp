@@ -77,7 +77,7 @@ bool solve_with_longer_range(const AlgorithmSpec &algorithm, const OptionValues 
   if (!(adhesion.work() / (factor * adhesion.range()) >= DBL_MIN)) return true;
   {
     const LongerRange longer(system, factor);
-    monitor.begin_first_stage(std::max(tolerance, continuation_tolerance));
+    monitor.begin_first_stage(first_stage_tolerance(tolerance));
     algorithm.run(system, control, value, options, monitor);
   }
   const Termination ended = monitor.termination();

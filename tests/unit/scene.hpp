@@ -12,6 +12,7 @@
 
 #include "core/aligned_field.hpp"
 
+#include "core/error.hpp"
 #include "core/grid.hpp"
 #include "physics/system.hpp"
 #include "physics/topography.hpp"
@@ -96,6 +97,30 @@ double max_abs_difference(const A &a, const B &b) {
 }
 
 // Distance of x from the origin on a periodic interval of length l, in [0, l/2].
+// Runs `call`, which must throw asp::Error with `status`; returns the error's message (empty,
+// and a failure recorded, where it threw nothing).
+template <class Call>
+std::string expect_error(asp::Status status, Call call, const std::string &what = "") {
+  try {
+    call();
+  } catch (const asp::Error &e) {
+    EXPECT_EQ(e.status(), status) << what << ": " << e.what();
+    return e.what();
+  }
+  ADD_FAILURE() << what << ": no error";
+  return std::string();
+}
+
+// A user's potential that is zero everywhere (asp_potential_fn's signature).
+inline int zero_potential(std::int64_t n, const double *, double *phi, double *dphi,
+                          double *d2phi, void *) {
+  for (std::int64_t i = 0; i < n; ++i) {
+    phi[i] = dphi[i] = 0.0;
+    if (d2phi != nullptr) d2phi[i] = 0.0;
+  }
+  return 0;
+}
+
 inline double periodic_distance(double x, double l) {
   double d = std::fmod(std::fabs(x), l);
   return d > 0.5 * l ? l - d : d;

@@ -25,7 +25,6 @@
 #include "physics/interaction.hpp"
 #include "physics/resolution.hpp"
 #include "scene.hpp"
-#include "solvers/nested_grids.hpp"
 #include "solvers/range_continuation.hpp"
 
 namespace {
@@ -118,15 +117,6 @@ void expect_identical(const Outcome &a, const Outcome &b, const std::string &wha
 
 // ---- what is refused, and the option's values ----------------------------------------------
 
-int zero_potential(std::int64_t n, const double *, double *phi, double *dphi, double *d2phi,
-                   void *) {
-  for (std::int64_t i = 0; i < n; ++i) {
-    phi[i] = dphi[i] = 0.0;
-    if (d2phi != nullptr) d2phi[i] = 0.0;
-  }
-  return 0;
-}
-
 // The interactions other than the exponential adhesion, each with a solver that takes it, on
 // a 32^2 rough surface.
 enum class Wall { hard, soft, user_hard, user_soft };
@@ -156,10 +146,12 @@ Request request_on(const OtherInteraction &r) {
   q.system = std::make_unique<asp::System>(grid, 1.0);
   q.system->set_topography(h.data());
   if (r.wall == Wall::soft) q.system->set_soft_wall(1e-2, 2.0 / 32, 1e-4, 2.0 / 32);
-  if (r.wall == Wall::user_hard) q.system->set_user_potential(zero_potential, nullptr, true);
+  if (r.wall == Wall::user_hard)
+    q.system->set_user_potential(asp_test::zero_potential, nullptr, true);
   // Without the wall a zero potential has no equilibrium: only the refusal is checked there
   // (it comes before the potential is ever called).
-  if (r.wall == Wall::user_soft) q.system->set_user_potential(zero_potential, nullptr, false);
+  if (r.wall == Wall::user_soft)
+    q.system->set_user_potential(asp_test::zero_potential, nullptr, false);
   q.solver = std::make_unique<asp::Solver>(r.algorithm);
   if (std::string(r.algorithm) == "bugnicourt" || std::string(r.algorithm) == "lbfgsb")
     q.solver->set_option("variable", std::string("gap"));
@@ -256,21 +248,14 @@ TEST(RangeContinuation, TakesAFactorOrAutoAndReadsBack) {
   EXPECT_EQ(solver.option("range_continuation"), 4.0);
   // A number does not read as a string; the setter takes no other word and no negative value.
   EXPECT_THROW(solver.option_text("range_continuation"), asp::Error);
-  for (double bad : {-1.0, -0.5, std::nan("")}) {
-    try {
-      solver.set_option("range_continuation", bad);
-      ADD_FAILURE() << bad;
-    } catch (const asp::Error &e) {
-      EXPECT_EQ(e.status(), asp::Status::invalid_argument);
-    }
-  }
-  try {
-    solver.set_option("range_continuation", std::string("long"));
-    ADD_FAILURE();
-  } catch (const asp::Error &e) {
-    EXPECT_EQ(e.status(), asp::Status::invalid_argument);
-    EXPECT_NE(std::string(e.what()).find("'auto'"), std::string::npos) << e.what();
-  }
+  for (double bad : {-1.0, -0.5, std::nan("")})
+    asp_test::expect_error(asp::Status::invalid_argument,
+                           [&] { solver.set_option("range_continuation", bad); },
+                           std::to_string(bad));
+  const std::string message = asp_test::expect_error(
+      asp::Status::invalid_argument,
+      [&] { solver.set_option("range_continuation", std::string("long")); });
+  EXPECT_NE(message.find("'auto'"), std::string::npos) << message;
   EXPECT_EQ(solver.option("range_continuation"), 4.0);  // a refused value changes nothing
 }
 
@@ -350,60 +335,25 @@ TEST(RangeContinuation, AutoActsOnlyOnAColdUnresolvedAdhesiveSolve) {
 
 // ---- a continued solve is the two solves it stands for -------------------------------------
 
-// The stages done by hand: the coarse levels, if any, as Solver::solve runs them (on the
-// system with its own range, to the levels' tolerance derived from the solve's: see below);
-// then, with the range F rho, a solve to max(tolerance, 1e-2) from the prolonged state (or the
-// cold one), then the range rho and a warm solve to the solve's tolerance. The continued
-// solve must do exactly this: the same iterations, evaluations and transforms (the sums; the
-// coarse levels' transforms counted once, rounded up, as Monitor::count_prior_transforms
-// takes them), the same state bit for bit (the same operations in the same order: nothing
-// may differ but the bookkeeping), and a history that is the first solve's rows up to its
-// last, whose row the second solve's first takes, then the second's, its counts offset by the
-// first's.
-//
-// Why the coarse levels by hand: a plain solve to 1e-2 derives its coarse levels' tolerance
-// from 1e-2 (nested_grids.cpp: max(tol, min(1e-4, 100 tol)) = 1e-2), where the continued solve
-// derives it from its own (1e-6 for 1e-8): another coarse state. And why no progress callback
-// that stops the first stage at an error of 1e-2 in a solve to the final tolerance instead:
-// bugnicourt reads the monitor's tolerance (it refreshes q before an iterate may converge),
-// so that solve makes other evaluations.
+// The stages done by hand: with the range F rho, a plain solve (range_continuation 0) to
+// max(tolerance, 1e-2), its coarse levels (if any) solved on the way, their tolerance derived
+// from that one as the continued solve derives theirs from its first stage's; then the range
+// rho and a warm solve to the solve's tolerance. The continued solve must do exactly this:
+// the same iterations, evaluations and transforms (the sums; the coarse levels' transforms
+// are in the first solve's), the same state bit for bit (the same operations in the same
+// order: nothing may differ but the bookkeeping), and a history that is the first solve's
+// rows up to its last, whose row the second solve's first takes, then the second's, its
+// counts offset by the first's.
 struct ByHand {
   Outcome first, second;
-  std::int64_t coarse_transforms = 0;  // ceil of the weighted coarse transforms
 };
 
 ByHand solve_by_hand(const Scene &s, double factor, double tolerance, bool levels) {
   ByHand out;
   auto system = system_of(s);
-  if (levels) {
-    // The options and monitor settings of Solver::solve for gap_solver(0, tolerance).
-    const asp::AlgorithmSpec &algorithm = gap_solver(0.0, tolerance).algorithm();
-    asp::OptionValues options;
-    for (const asp::OptionSpec &o : algorithm.options) {
-      if (o.type == asp::OptionType::choice)
-        options.texts[o.name] = o.choices.front();
-      else
-        options.numbers[o.name] = o.default_value;
-    }
-    options.texts["variable"] = "gap";
-    options.numbers["tolerance"] = tolerance;
-    options.numbers["max_iterations"] = 3000.0;
-    options.numbers["range_continuation"] = 0.0;
-    asp::MonitorSettings settings;
-    settings.tolerance = tolerance;
-    settings.max_iterations = 3000;
-    settings.stall_window = static_cast<std::int64_t>(options.number("stall_window"));
-    settings.reductions = &system->grid().reductions();
-    const std::int64_t count = asp::nested_levels(*system, asp::levels_auto);
-    EXPECT_EQ(count, 1);  // 128^2
-    const asp::CoarseWork work = asp::solve_coarse_levels(
-        algorithm, options, *system, Control::penetration, s.penetration, count, settings);
-    EXPECT_TRUE(work.prolonged);
-    out.coarse_transforms = static_cast<std::int64_t>(std::ceil(work.transforms));
-  }
   system->set_adhesion(s.work, factor * s.range);
-  asp::Solver first = gap_solver(0.0, std::max(tolerance, asp::continuation_tolerance));
-  first.set_option("levels", 0.0);
+  asp::Solver first = gap_solver(0.0, asp::first_stage_tolerance(tolerance));
+  if (!levels) first.set_option("levels", 0.0);
   first.set_history(true);
   first.solve(*system, Control::penetration, s.penetration);
   out.first = outcome_of(first, *system);
@@ -430,11 +380,10 @@ TEST(RangeContinuation, AContinuedSolveIsItsTwoStagesDoneByHand) {
       const Outcome continued = solve(s, solver, Control::penetration, s.penetration);
       const std::string what = "rho = " + std::to_string(range_over_l) + " l, levels " +
                                (levels ? "auto" : "0");
-      std::printf("%s: by hand %lld + %lld iterations, %lld + %lld + %lld transforms (%s); "
+      std::printf("%s: by hand %lld + %lld iterations, %lld + %lld transforms (%s); "
                   "continued %lld iterations, %lld transforms (%s)\n",
                   what.c_str(), static_cast<long long>(hand.first.report.iterations),
                   static_cast<long long>(hand.second.report.iterations),
-                  static_cast<long long>(hand.coarse_transforms),
                   static_cast<long long>(hand.first.report.transforms),
                   static_cast<long long>(hand.second.report.transforms),
                   asp::termination_name(hand.second.report.termination),
@@ -453,9 +402,8 @@ TEST(RangeContinuation, AContinuedSolveIsItsTwoStagesDoneByHand) {
       EXPECT_EQ(continued.report.evaluations,
                 hand.first.report.evaluations + hand.second.report.evaluations)
           << what;
-      EXPECT_EQ(continued.report.transforms, hand.coarse_transforms +
-                                                 hand.first.report.transforms +
-                                                 hand.second.report.transforms)
+      EXPECT_EQ(continued.report.transforms,
+                hand.first.report.transforms + hand.second.report.transforms)
           << what;
       EXPECT_EQ(continued.report.error, hand.second.report.error) << what;
       EXPECT_TRUE(continued.pressure == hand.second.pressure) << what;
@@ -472,12 +420,10 @@ TEST(RangeContinuation, AContinuedSolveIsItsTwoStagesDoneByHand) {
                              static_cast<int>(asp::HistoryColumn::error),
                              static_cast<int>(asp::HistoryColumn::objective),
                              static_cast<int>(asp::HistoryColumn::contact_fraction)};
-      const double coarse = static_cast<double>(hand.coarse_transforms);
-      const double first_offsets[] = {0.0, 0.0, coarse, 0.0, 0.0, 0.0};
       const double second_offsets[] = {
           static_cast<double>(hand.first.report.iterations),
           static_cast<double>(hand.first.report.evaluations),
-          coarse + static_cast<double>(hand.first.report.transforms), 0.0, 0.0, 0.0};
+          static_cast<double>(hand.first.report.transforms), 0.0, 0.0, 0.0};
       int differing = 0;
       for (std::size_t k = 0; k < h.size(); ++k) {
         const bool first = k < boundary;
@@ -485,7 +431,7 @@ TEST(RangeContinuation, AContinuedSolveIsItsTwoStagesDoneByHand) {
             first ? hand.first.history[k] : hand.second.history[k - boundary];
         for (int c = 0; c < 6; ++c)
           differing += h[k][columns[c]] !=
-                       expected[columns[c]] + (first ? first_offsets[c] : second_offsets[c]);
+                       expected[columns[c]] + (first ? 0.0 : second_offsets[c]);
       }
       EXPECT_EQ(differing, 0) << what;
     }
@@ -662,11 +608,11 @@ TEST(RangeContinuation, ACancelAtTheFirstStagesLastIterationStopsTheSolve) {
 
 // On unresolved scenes the continued solve (the default, auto) converges to its tolerance in
 // a finite state whose energy is at most the plain cold solve's plus 1e-9 of it, as on the
-// challenge's scene (docs/performance.md). 1e-9: two solves that end in the same state to the tolerance 1e-8
-// differ in energy by less (measured 7e-10 at 64^2, rho = l: the same contact set, pressures
-// within 3e-8 of the peak; the elastic and adhesive energies cancel in part, so the total's
-// relative error exceeds theirs), and a different metastable state by far more (1e-4 to 1e-1
-// of the energy on these scenes).
+// challenge's scene (docs/performance.md). 1e-9: two solves that end in the same state to
+// the tolerance 1e-8 differ in energy by less (measured 7e-10 at 64^2, rho = l: the same
+// contact set, pressures within 3e-8 of the peak; the elastic and adhesive energies cancel
+// in part, so the total's relative error exceeds theirs), and a different metastable state
+// by far more (1e-4 to 1e-1 of the energy on these scenes).
 // Not every continuation does: at 128^2, rho = l, w/rho = P (zone 0.65 pixel) a factor of
 // 1.75 (sqrt(2/zone)) reached a state with 1.5e-3 more energy than the plain cold solve's
 // (one pixel in contact differs; with levels 0 too, and with F = 4: 1.4e-3). That is why auto

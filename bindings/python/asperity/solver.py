@@ -92,7 +92,8 @@ class Solver(OwnedHandle):
 
     def get_option(self, name):
         """An option's value: a float for numeric options, a str for string options, and the
-        word a numeric option holds where it holds one ("auto" for "levels")."""
+        word a numeric option holds where it holds one ("auto" for "levels" and
+        "range_continuation")."""
         value = ctypes.c_double()
         status = lib.asp_solver_get_option(self.handle, name.encode(), ctypes.byref(value))
         if status == _c.ASP_OK:
