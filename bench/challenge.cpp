@@ -22,7 +22,9 @@
 // one's: the pixels on the wall in one and not in the other, how far (in pixels, the
 // chessboard distance on the periodic grid) the converged state's missing ones lie from the
 // nearest pixel on the wall at K, and the median gap of the missing ones in units of rho.
-// It shows how the contact set settles during a solve.
+// It shows how the contact set settles during a solve. (With bugnicourt's default
+// continuation in the range each re-solve is a continued cold solve: a K within its first
+// stage compares the contact set of the longer range's scene.)
 //
 // With --range-scale S the range is S times the challenge's 2.071 nm (the work of adhesion
 // kept): a variant of the scene whose cohesive zone a grid resolves the better the larger S.

@@ -799,7 +799,9 @@ ASP_EXPORT int asp_solver_describe(const asp_solver *solver, char *buffer, int64
  *                     by 2 per axis (same box, substrate, K~(0) and interaction; the heights'
  *                     spectrum truncated below the coarse grid's Nyquist wavevector), the
  *                     coarsest first, each to the tolerance times 100 per level below the
- *                     system's grid (at most 1e-4, at least the tolerance), and starts from
+ *                     system's grid (at most 1e-4, at least the tolerance; with a
+ *                     continuation in the range, below, all at its first stage's 1e-2),
+ *                     and starts from
  *                     the finest of them, its pressure interpolated linearly and the gap
  *                     the one that pressure makes (docs/algorithms.md); the solve on the
  *                     system's grid then meets the tolerance as without levels. A state
@@ -822,26 +824,28 @@ ASP_EXPORT int asp_solver_describe(const asp_solver *solver, char *buffer, int64
  *                     history's first row holds the coarse levels' already); the progress
  *                     callback is called on the system's grid only. A distributed grid's
  *                     coarse grids are distributed over the same processes;
- *   "range_continuation"  real: 0, a factor F >= 1, or the string "auto"; default "auto"
- *                     for "bugnicourt", 0 for the others: with the hard wall and
- *                     exponential adhesion (asp_system_set_adhesion), a solve whose state
- *                     carries no pressure first solves the same scene with the range F rho
- *                     (the work of adhesion kept: a cohesive zone F^2 times longer), after
- *                     the coarse levels and from their state, to the tolerance 1e-2 (or
- *                     the solve's, if looser), then with rho from that state to the
- *                     solve's tolerance. On a grid that does not resolve the cohesive zone
- *                     (asp_system_check_resolution) the contact lines otherwise settle a pixel
- *                     at a time; this cut the iterations of the contact-mechanics
- *                     challenge's scene at 4096^2 by about a third (docs/performance.md).
- *                     Adhesive contact has many stable states, and the one reached may
- *                     differ from a plain solve's (lower in energy on that scene; higher by
- *                     1.5e-3 on one test scene with F = 1.75). "auto" takes
- *                     F = sqrt(2 / zone), the factor that makes the zone 2 pixels long,
- *                     where the zone is at most half a pixel, and none otherwise, with any
- *                     other interaction, and under a mean pressure <= 0; it reads back as
- *                     -1 and "auto" as "levels" does. 0 and 1 are none. The system's
- *                     interaction is its own again when the solve returns, however it
- *                     ends. An explicit F with another interaction is refused by
+ *   "range_continuation"  real in [0, 1e6] (0 or at least 1), or the string "auto";
+ *                     default "auto" for "bugnicourt", 0 for the others: with the hard
+ *                     wall and exponential adhesion (asp_system_set_adhesion), a solve
+ *                     whose state carries no pressure first solves the same scene with the
+ *                     range F rho (the work of adhesion kept: a cohesive zone F^2 times
+ *                     longer), after the coarse levels and from their state, to the
+ *                     tolerance 1e-2 (or the solve's, if looser; the coarse levels too),
+ *                     then with rho from that state to the solve's tolerance. On a grid that
+ *                     does not resolve the cohesive zone (asp_system_check_resolution) the
+ *                     contact lines otherwise settle a pixel at a time: on the
+ *                     contact-mechanics challenge's scene this cut the iterations at 4096^2
+ *                     by 21 to 56 %, and cost up to 30 % more at 512^2 and 1024^2
+ *                     (docs/performance.md). Adhesive contact has many stable states, and
+ *                     the one reached may differ from a plain solve's (lower in energy on
+ *                     that scene; 1.5e-3 higher, relative, on one test scene with F = 1.75).
+ *                     "auto" takes F = sqrt(2 / zone), the factor that makes the zone 2
+ *                     pixels long, where the zone is at most half a pixel, and none
+ *                     otherwise or with any other interaction; it reads back as -1 and
+ *                     "auto" as "levels" does. 0 and 1 are none, and so is any value under
+ *                     a mean pressure <= 0 (a load the longer range's weaker tension might
+ *                     not hold). The system's interaction is its own again when the solve
+ *                     returns, however it ends. An explicit F with another interaction is refused by
  *                     asp_solver_solve and asp_solver_supports with ASP_ERR_UNSUPPORTED, a
  *                     value in (0, 1) with ASP_ERR_INVALID_ARGUMENT, naming the option.
  *                     The report, the history and the progress callback count the
@@ -849,7 +853,11 @@ ASP_EXPORT int asp_solver_describe(const asp_solver *solver, char *buffer, int64
  *                     row at the first stage's last iteration is the second stage's
  *                     starting point, measured with rho (the callback saw that iteration
  *                     once, with the first stage's error), and max_iterations bounds both
- *                     stages together. A cancel in the first stage ends the solve;
+ *                     stages together. A solve that ends in the first stage (cancelled, or
+ *                     at the iteration limit) leaves that stage's state, and its error is
+ *                     that of the range F rho; a cancel there ends the solve even at an
+ *                     iteration that met the stage's tolerance. A first stage that breaks
+ *                     down leaves the state reset, and the second stage starts cold;
  * and its own options (asp_solver_describe lists them). Integer options take whole numbers
  * given as doubles. An unknown name or a value outside the range is refused with
  * ASP_ERR_INVALID_ARGUMENT, naming the option and listing the valid names or the range;
@@ -871,7 +879,9 @@ ASP_EXPORT int asp_solver_set_max_iterations(asp_solver *solver, int64_t max_ite
  * started and the error. Return 0 to go on; any other value stops the solve cleanly: the
  * system holds the valid state of that iteration (see asp_solver_solve) and the termination
  * reason is ASP_TERMINATION_CANCELLED (unless that iteration's error already met the tolerance: a
- * converged state is reported as converged). The callback runs on the thread that called
+ * converged state is reported as converged; but see "range_continuation" for a first stage).
+ * With "range_continuation" the iterations of both stages are numbered on, and the one that
+ * ends the first is reported once. The callback runs on the thread that called
  * asp_solver_solve and must not use the solver or system being solved (such calls from it are
  * refused with ASP_ERR_INVALID_STATE, and a destroy does nothing). NULL removes it.
  * user_data is passed through untouched. */
@@ -972,7 +982,7 @@ ASP_EXPORT int asp_solver_solve(asp_solver *solver, asp_system *system, int cont
 /* Whether the solver, with its current options, serves the system under the control, asked
  * without solving and without changing anything: ASP_OK if it does, ASP_ERR_UNSUPPORTED with
  * the message asp_solver_solve would give if it does not (ASP_ERR_INVALID_ARGUMENT for an
- * unknown control). Programs that offer every algorithm able to solve a scene ask this of
+ * unknown control, and for a "range_continuation" in (0, 1)). Programs that offer every algorithm able to solve a scene ask this of
  * each one (asp_algorithms lists them). */
 ASP_EXPORT int asp_solver_supports(const asp_solver *solver, const asp_system *system,
                                    int control);

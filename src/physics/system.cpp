@@ -93,6 +93,13 @@ void System::reset_state() {
   state_.penetration = 0.0;
 }
 
+bool System::carries_pressure() const {
+  const double *p = state_.pressure.data();
+  const double count = loops::sum(grid_->reductions(), grid_->local_pixels(),
+                                  [&](std::int64_t i) { return p[i] != 0.0 ? 1.0 : 0.0; });
+  return count > 0.0;
+}
+
 double System::mean_pressure() const {
   const double *p = state_.pressure.data();
   // Each term divided by N first: the sum of finite pressures cannot overflow.

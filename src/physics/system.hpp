@@ -112,6 +112,16 @@ class System {
   // the state reset rather than half-scaled.
   void set_state_held_by_solve(bool held) { state_held_by_solve_ = held; }
   bool state_held_by_solve() const { return state_held_by_solve_; }
+  // Whether the state carries pressure anywhere: a solved or prolonged state, not a cold one
+  // (a new system, after a reset or a new topography). Collective on a distributed grid.
+  bool carries_pressure() const;
+  // Exchanges the system's interaction with `other`, which must not be null, without counting
+  // it as a change (revision() stays): for a solve that solves a variant of its scene on the
+  // way and puts the system's own interaction back (solvers/range_continuation.hpp). Cannot
+  // fail.
+  void exchange_interaction(std::unique_ptr<Interaction> &other) noexcept {
+    interaction_.swap(other);
+  }
 
   // Stores a solved state, the one way every formulation writes its result back:
   // pixel(i) gives pixel i's SolvedPixel (it may read the state's arrays at i, which are

@@ -93,8 +93,8 @@ class Monitor {
   // (the same state, measured against the next stage's objective), so that a history still
   // has iterations() + 1 rows; the progress callback, which saw that iteration, is not
   // called for it again. max_iterations bounds the stages together; the stall window starts
-  // again. Only a stage that ended short of a breakdown, a cancel or the iteration limit is
-  // continued (the caller's choice); the termination is cleared.
+  // again. The termination is cleared: the caller decides which endings of a stage it
+  // continues from (range_continuation.hpp: all but a cancel and the iteration limit).
   void continue_with_next_stage(double tolerance);
 
   Termination termination() const { return termination_; }

@@ -6,7 +6,6 @@
 #include <memory>
 
 #include "core/error.hpp"
-#include "core/loops.hpp"
 #include "formulations/scene_units.hpp"
 #include "physics/coarse_system.hpp"
 
@@ -44,14 +43,6 @@ std::int64_t nested_levels(const System &system, double levels) {
               "option 'levels' is " + std::to_string(wanted) + ", but the grid can be halved " +
                   std::to_string(found) + " time" + (found == 1 ? "" : "s") + " only: " +
                   obstacle);
-}
-
-bool carries_pressure(const System &system) {
-  const double *p = system.state().pressure.data();
-  const double count =
-      loops::sum(system.grid().reductions(), system.grid().local_pixels(),
-                 [&](std::int64_t i) { return p[i] != 0.0 ? 1.0 : 0.0; });
-  return count > 0.0;
 }
 
 namespace {
@@ -113,7 +104,7 @@ void cascade(const AlgorithmSpec &algorithm, const OptionValues &options, System
   // stable state of higher energy than the contact that a cold start, touching, grows.
   const Termination ended = monitor.termination();
   if (ended != Termination::breakdown && ended != Termination::separated &&
-      carries_pressure(*coarse)) {
+      coarse->carries_pressure()) {
     prolong_state(*coarse, fine);
     if (depth == 0) work.prolonged = true;
   }
@@ -125,7 +116,7 @@ CoarseWork solve_coarse_levels(const AlgorithmSpec &algorithm, const OptionValue
                                System &system, Control control, double value,
                                std::int64_t levels, const MonitorSettings &settings) {
   CoarseWork work;
-  if (levels == 0 || carries_pressure(system)) return work;
+  if (levels == 0 || system.carries_pressure()) return work;
   const double reference_pressure = scene_units(system, control, value).pressure;
   cascade(algorithm, options, system, control, value, levels, 0, reference_pressure,
           static_cast<double>(system.grid().n_pixels()), settings, work);

@@ -31,11 +31,6 @@ constexpr std::int64_t smallest_side = 8;
 // levels (see solve_coarse_levels).
 std::int64_t nested_levels(const System &system, double levels);
 
-// Whether the system's state carries pressure anywhere: a solved or prolonged state, not
-// a cold one (a fresh system, after a reset or a new topography). Collective on a
-// distributed grid.
-bool carries_pressure(const System &system);
-
 // The coarse levels' work, for the report: their iterations, and their transforms weighted
 // by their grid's pixels over the system's (the cost in transforms of the system's size).
 struct CoarseWork {
@@ -48,9 +43,10 @@ struct CoarseWork {
 // or mean gap; at the same rigid-body position under penetration control) and leaves the
 // prolonged solution of the finest of them as the system's state. Does nothing with
 // levels = 0 or when the state carries pressure (a warm start, kept). `settings` are those
-// of the solve on the system's grid; the coarse levels take its iteration limit and stall
-// window, a tolerance loosened by level_tolerance_factor per level, and neither the history
-// nor the progress callback. With exponential adhesion the coarse levels solve the
+// of the stage they start on the system's grid (the solve's, or with a continuation in the
+// range its first stage's tolerance: range_continuation.hpp); the coarse levels take its
+// iteration limit and stall window, a tolerance loosened by level_tolerance_factor per
+// level, and neither the history nor the progress callback. With exponential adhesion the coarse levels solve the
 // non-adhesive hard wall (continuation; see nested_grids.cpp), except under a load <= 0.
 CoarseWork solve_coarse_levels(const AlgorithmSpec &algorithm, const OptionValues &options,
                                System &system, Control control, double value,

@@ -35,13 +35,18 @@ constexpr double continuation_largest_zone = 0.5;
 // The first stage's tolerance (or the solve's own if looser): its state is a start, and one
 // tighter than this spent iterations the second stage did not get back on that scene.
 constexpr double continuation_tolerance = 1e-2;
-// The first stage's tolerance in a solve to `tolerance`. The coarse levels of nested grids,
-// which start the first stage, derive theirs from it too (nested_grids.hpp): on the
-// challenge's scene that took 75 iterations at 4096^2 where levels solved for the final
-// tolerance took 82, and as many or fewer at 1024^2 and 2048^2 but for one penetration.
+// The first stage's tolerance in a solve to `tolerance`.
 inline double first_stage_tolerance(double tolerance) {
   return tolerance > continuation_tolerance ? tolerance : continuation_tolerance;
 }
+
+// The settings for the coarse levels of nested grids in a solve with the continuation's
+// factor (0: none) and the solve's settings: with a continuation the coarse levels start its
+// first stage, and are solved to that stage's tolerance (every level to 1e-2, as
+// nested_grids.hpp derives a level's tolerance from the solve's), not to the final one's.
+// On the challenge's scene at 4096^2 that took 57 / 83 / 88 iterations at 1 / 1.5 / 2 um
+// against 60 / 82 / 103 with the levels to the final tolerance's, and fewer transforms.
+MonitorSettings coarse_level_settings(const MonitorSettings &settings, double factor);
 
 // Refuses an option's value that a solve of the system cannot take: an explicit F >= 1 where
 // the interaction is not the exponential adhesion, with Error(unsupported) naming the
@@ -51,19 +56,22 @@ void check_range_continuation(const System &system, double option);
 // The factor F of the range for the first stage of a solve of the system under the control,
 // from the option's value (checked as above): 0 for none. An explicit F >= 1 is taken as it
 // is (1: none). Auto gives sqrt(continuation_zone / zone) where the zone is at most
-// continuation_largest_zone pixels, and 0 where it is longer, where the interaction is
-// another, and under a mean pressure <= 0 (a
-// tensile load that the longer range, with its weaker largest tension w/(F rho), might not
-// hold). A state that carries pressure (a warm start) takes none either, whatever F: the
-// continuation, like the nested grids, is for a cold solve. Collective on a distributed grid.
+// continuation_largest_zone pixels, and 0 where it is longer or where the interaction is
+// another. Under a mean pressure <= 0 there is none, whatever the option: a tensile load
+// that the longer range, with its weaker largest tension w/(F rho), might not hold, and a
+// first stage that separates the surfaces is no start. A state that carries pressure (a warm
+// start) takes none either: the continuation, like the nested grids, is for a cold solve.
+// Collective on a distributed grid.
 double continuation_factor(const System &system, Control control, double value, double option);
 
 // Runs the algorithm on the system with the range F rho, to first_stage_tolerance, counting
 // its work in the monitor, and leaves the monitor ready for the solve with the scene's own
 // range (Monitor::continue_with_next_stage, to `tolerance`) unless the stage was cancelled or
-// reached the iteration limit (then the solve is over: returns false). The system's
-// interaction is restored on every path, exceptions included. Does nothing and returns true
-// when F <= 1.
+// reached the iteration limit (then the solve is over, in the first stage's state, its
+// error that of the range F rho: returns false). A first stage that broke down or separated
+// the surfaces leaves the state reset, and the second stage starts cold. The system's
+// interaction is its own again on every path, exceptions included, and its revision() is
+// unchanged. Does nothing and returns true when F <= 1.
 bool solve_with_longer_range(const AlgorithmSpec &algorithm, const OptionValues &options,
                              System &system, Control control, double value, double factor,
                              double tolerance, Monitor &monitor);

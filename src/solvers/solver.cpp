@@ -181,12 +181,8 @@ void Solver::solve(System &system, Control control, double value) {
       continuation_factor(system, control, value, options_.number("range_continuation"));
   CoarseWork coarse;
   try {
-    // With a continuation the coarse levels start its first stage, and take that stage's
-    // tolerance as theirs to derive their own from.
-    MonitorSettings coarse_settings = settings;
-    if (range_factor > 1.0) coarse_settings.tolerance = first_stage_tolerance(settings.tolerance);
     coarse = solve_coarse_levels(algorithm_, options_, system, control, value, levels,
-                                 coarse_settings);
+                                 coarse_level_settings(settings, range_factor));
     // A prolonged coarse state is the solve's, not the caller's: a failure from here on
     // resets it (a nested solve starts only from a state without pressure, a cold one).
     if (coarse.prolonged) system.set_state_held_by_solve(true);

@@ -80,6 +80,8 @@ int main(void) {
   CHECK_OK(asp_system_set_topography(system, heights, n));
   CHECK_OK(asp_solver_set_option_string(solver, "variable", "gap"));
   CHECK_OK(asp_solver_set_option(solver, "range_continuation", 4.0));
+  CHECK_ERROR(asp_solver_supports(solver, system, ASP_CONTROL_PENETRATION), ASP_ERR_UNSUPPORTED,
+              "'range_continuation'");
   CHECK_ERROR(asp_solver_solve(solver, system, ASP_CONTROL_PENETRATION, 0.3 * height_range),
               ASP_ERR_UNSUPPORTED, "'range_continuation'");
   /* The handles stay usable: "auto" does nothing on the hard wall, and 0 is none. */
@@ -100,9 +102,12 @@ int main(void) {
                                        &length));
   CHECK(resolved == 0 && ratio > 0.05 && ratio < 0.2);
   CHECK_OK(asp_solver_set_option(solver, "range_continuation", 0.5));
+  CHECK_ERROR(asp_solver_supports(solver, system, ASP_CONTROL_PENETRATION),
+              ASP_ERR_INVALID_ARGUMENT, "'range_continuation'");
   CHECK_ERROR(asp_solver_solve(solver, system, ASP_CONTROL_PENETRATION, 0.3 * height_range),
               ASP_ERR_INVALID_ARGUMENT, "'range_continuation'");
   CHECK_OK(asp_solver_set_option(solver, "range_continuation", 4.0));
+  CHECK_OK(asp_solver_supports(solver, system, ASP_CONTROL_PENETRATION));
   CHECK_OK(asp_solver_solve(solver, system, ASP_CONTROL_PENETRATION, 0.3 * height_range));
   CHECK_OK(asp_solver_converged(solver, &converged));
   CHECK(converged == 1);

@@ -96,7 +96,6 @@ double max_abs_difference(const A &a, const B &b) {
   return m;
 }
 
-// Distance of x from the origin on a periodic interval of length l, in [0, l/2].
 // Runs `call`, which must throw asp::Error with `status`; returns the error's message (empty,
 // and a failure recorded, where it threw nothing).
 template <class Call>
@@ -121,6 +120,7 @@ inline int zero_potential(std::int64_t n, const double *, double *phi, double *d
   return 0;
 }
 
+// Distance of x from the origin on a periodic interval of length l, in [0, l/2].
 inline double periodic_distance(double x, double l) {
   double d = std::fmod(std::fabs(x), l);
   return d > 0.5 * l ? l - d : d;

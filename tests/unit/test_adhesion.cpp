@@ -212,46 +212,47 @@ TEST(Adhesion, StrongAdhesionOnRoughSurfacesEndsFiniteAndHonest) {
   // Without the continuation in the range (one objective, whose every step descends), and
   // with it (the default: two objectives, a longer range's first; its descent is checked in
   // test_range_continuation.cpp).
-  for (const bool continued : {false, true})
-  for (double range_over_l : {10.0, 1.0, 0.1}) {
-    for (double stress_over_p : {1.0, 100.0}) {
-      asp::System system(grid, 1.0);
-      system.set_topography(heights.data());
-      const double P = 0.05, l = P / system.substrate().pixel_stiffness();
-      const double rho = range_over_l * l;
-      system.set_adhesion(stress_over_p * P * rho, rho);
-      const double delta = 0.3 * system.height_range();
-      asp::Solver solver("bugnicourt");
-      solver.set_option("variable", std::string("gap"));
-      solver.set_option("tolerance", 1e-8);
-      solver.set_option("max_iterations", 3000);
-      if (!continued) solver.set_option("range_continuation", 0.0);
-      solver.set_history(true);
-      solver.solve(system, Control::penetration, delta);
-      const asp::SolveReport report = solver.report();
-      // Every step descends: the objective never rises by more than rounding (1e-12 of it).
-      const auto &history = solver.history();
-      const int objective = static_cast<int>(asp::HistoryColumn::objective);
-      int rises = 0;
-      for (std::size_t k = 1; k < history.size(); ++k)
-        rises += history[k][objective] >
-                 history[k - 1][objective] + 1e-12 * std::fabs(history[k - 1][objective]);
-      if (!continued) EXPECT_EQ(rises, 0);
-      std::printf("%s, rho = %g l, w/rho = %g P: %s after %lld iterations, error %.1e\n",
-                  continued ? "continued" : "plain", range_over_l, stress_over_p,
-                  asp::termination_name(report.termination),
-                  static_cast<long long>(report.iterations), report.error);
-      EXPECT_NE(report.termination, asp::Termination::breakdown);
-      if (report.converged()) EXPECT_LE(report.error, 1e-8);
-      for (std::size_t i = 0; i < system.state().pressure.size(); ++i) {
-        ASSERT_TRUE(std::isfinite(system.state().pressure[i]));
-        ASSERT_TRUE(std::isfinite(system.state().gap[i]));
-        // The wall pulls no harder than adhesion can: p >= -w/rho.
-        ASSERT_GE(system.state().pressure[i], -stress_over_p * P * (1 + 1e-12));
+  for (const bool continued : {false, true}) {
+    for (double range_over_l : {10.0, 1.0, 0.1}) {
+      for (double stress_over_p : {1.0, 100.0}) {
+        asp::System system(grid, 1.0);
+        system.set_topography(heights.data());
+        const double P = 0.05, l = P / system.substrate().pixel_stiffness();
+        const double rho = range_over_l * l;
+        system.set_adhesion(stress_over_p * P * rho, rho);
+        const double delta = 0.3 * system.height_range();
+        asp::Solver solver("bugnicourt");
+        solver.set_option("variable", std::string("gap"));
+        solver.set_option("tolerance", 1e-8);
+        solver.set_option("max_iterations", 3000);
+        if (!continued) solver.set_option("range_continuation", 0.0);
+        solver.set_history(true);
+        solver.solve(system, Control::penetration, delta);
+        const asp::SolveReport report = solver.report();
+        // Every step descends: the objective never rises by more than rounding (1e-12 of it).
+        const auto &history = solver.history();
+        const int objective = static_cast<int>(asp::HistoryColumn::objective);
+        int rises = 0;
+        for (std::size_t k = 1; k < history.size(); ++k)
+          rises += history[k][objective] >
+                   history[k - 1][objective] + 1e-12 * std::fabs(history[k - 1][objective]);
+        if (!continued) EXPECT_EQ(rises, 0);
+        std::printf("%s, rho = %g l, w/rho = %g P: %s after %lld iterations, error %.1e\n",
+                    continued ? "continued" : "plain", range_over_l, stress_over_p,
+                    asp::termination_name(report.termination),
+                    static_cast<long long>(report.iterations), report.error);
+        EXPECT_NE(report.termination, asp::Termination::breakdown);
+        if (report.converged()) EXPECT_LE(report.error, 1e-8);
+        for (std::size_t i = 0; i < system.state().pressure.size(); ++i) {
+          ASSERT_TRUE(std::isfinite(system.state().pressure[i]));
+          ASSERT_TRUE(std::isfinite(system.state().gap[i]));
+          // The wall pulls no harder than adhesion can: p >= -w/rho.
+          ASSERT_GE(system.state().pressure[i], -stress_over_p * P * (1 + 1e-12));
+        }
+        EXPECT_TRUE(std::isfinite(system.interaction_energy()));
+        EXPECT_NEAR(system.repulsive_force() + system.attractive_force(), system.total_force(),
+                    1e-12 * (system.repulsive_force() - system.attractive_force()));
       }
-      EXPECT_TRUE(std::isfinite(system.interaction_energy()));
-      EXPECT_NEAR(system.repulsive_force() + system.attractive_force(), system.total_force(),
-                  1e-12 * (system.repulsive_force() - system.attractive_force()));
     }
   }
 }

@@ -18,9 +18,11 @@
 #include <cstdint>
 #include <cstdio>
 #include <memory>
+#include <new>
 #include <string>
 #include <vector>
 
+#include "core/aligned_field.hpp"
 #include "core/error.hpp"
 #include "physics/interaction.hpp"
 #include "physics/resolution.hpp"
@@ -213,10 +215,10 @@ TEST(RangeContinuation, ExplicitFactorsAreRefusedWhereTheyCannotApply) {
   expect_identical(solve(s, 1.0), solve(s, 0.0), "range_continuation 1");
 }
 
-// DEFECT: Solver::check_supported (asp_solver_supports) promises to throw Error(unsupported)
-// "as solve() would" for options the system cannot take, and it does so for a count of
-// levels the grid cannot take; it does not ask continuation_factor, so that it takes the
-// explicit factor that solve() then refuses.
+// Solver::check_supported (asp_solver_supports) throws Error(unsupported) "as solve() would"
+// for options the system cannot take: for a count of levels the grid cannot take, and for an
+// explicit factor on an interaction other than the exponential adhesion (which it once took,
+// and solve() then refused).
 TEST(RangeContinuation, CheckSupportedRefusesWhatSolveRefuses) {
   for (const OtherInteraction &r : other_interactions) {
     Request q = request_on(r);
@@ -558,6 +560,58 @@ TEST(RangeContinuation, TheInteractionIsRestoredHoweverTheSolveEnds) {
     EXPECT_TRUE(solver.report().converged());
     expect_own_adhesion(*system, s, "after the iteration limit");
   }
+}
+
+// When memory runs out in the middle of a continued solve (the library's allocator limited to
+// a little more each time, as in test_solver_framework.cpp), the solve throws, the system's
+// adhesion is its own, exactly, and its state is the cold one it started from (the solve held
+// it); some limit lets the solve through, which then converges.
+TEST(RangeContinuation, TheInteractionIsRestoredWhenMemoryRunsOut) {
+  const Scene s = adhesive_scene(64, 0.1, 1.0);
+  auto system = system_of(s);
+  const asp::ContactState cold = system->state();
+  asp::Solver solver = gap_solver(4.0);
+  const std::int64_t pixels = s.grid->n_pixels();
+  int failures = 0;
+  bool solved = false;
+  for (int step = 0; step < 400 && !solved; ++step) {
+    asp::set_field_bytes_limit(asp::field_bytes_in_use() + 4 * pixels * step + 1);
+    try {
+      solver.solve(*system, Control::penetration, s.penetration);
+      solved = true;
+    } catch (const std::bad_alloc &) {
+      ++failures;
+    }
+    asp::set_field_bytes_limit(0);
+    expect_own_adhesion(*system, s, "after step " + std::to_string(step));
+    if (solved) break;
+    EXPECT_TRUE(asp_test::field_vector(system->state().pressure) ==
+                asp_test::field_vector(cold.pressure))
+        << "step " << step;
+    EXPECT_TRUE(asp_test::field_vector(system->state().gap) == asp_test::field_vector(cold.gap))
+        << "step " << step;
+  }
+  std::printf("%d solves ran out of memory before one went through\n", failures);
+  EXPECT_GT(failures, 0);
+  ASSERT_TRUE(solved);
+  EXPECT_TRUE(solver.report().converged());
+}
+
+// Under a mean pressure <= 0 there is no continuation, whatever the option: an explicit
+// factor solves as 0 does, bit for bit.
+TEST(RangeContinuation, AnExplicitFactorDoesNothingUnderATensileOrZeroLoad) {
+  const Scene s = adhesive_scene(64, 0.1, 1.0);
+  for (double load : {0.0, -1e-4}) {
+    const Outcome explicit_factor = solve(s, gap_solver(4.0), Control::mean_pressure, load);
+    const Outcome none = solve(s, gap_solver(0.0), Control::mean_pressure, load);
+    expect_identical(explicit_factor, none, "mean pressure " + std::to_string(load));
+  }
+  // A compressive load takes it.
+  const Outcome pressed = solve(s, gap_solver(4.0), Control::mean_pressure, 1e-3);
+  const Outcome plain = solve(s, gap_solver(0.0), Control::mean_pressure, 1e-3);
+  EXPECT_TRUE(pressed.report.converged());
+  EXPECT_FALSE(pressed.pressure == plain.pressure &&
+               pressed.report.iterations == plain.report.iterations);
 }
 
 // A cancel asked at the first stage's last iteration stops the solve. A state that met the
