@@ -11,8 +11,8 @@
 // together, and the iterations do not grow with the grid (docs/performance.md, "The growth
 // and the cohesive zone"). From that state the scene's own range only has the short way back
 // to go. The option "range_continuation" says F (0: none; "auto", the default of bugnicourt:
-// the F that makes the zone continuation_zone pixels long, where the grid does not resolve
-// it, and none where it does).
+// the F that makes the zone continuation_zone pixels long, where the zone is at most
+// continuation_largest_zone pixels, and none where it is longer).
 #pragma once
 
 #include "physics/system.hpp"
@@ -23,9 +23,11 @@ namespace asp {
 
 // The option's value that stands for "auto".
 constexpr double continuation_auto = -1.0;
-// The cohesive zone, in pixels, that auto gives the first stage: measured on the challenge's
-// scene at 1024^2 to 4096^2 (docs/performance.md), where 2 pixels took the fewest iterations
-// together and kept them from growing with the grid.
+// The cohesive zone, in pixels, that auto gives the first stage. On the challenge's scene
+// (docs/algorithms.md) zones of 1.5, 2 and 3 pixels took about as many iterations at 1024^2
+// and 2048^2 (41 / 41 / 39 and 53 / 54 / 54), and at 4096^2 zones of 1.5 to 4.4 pixels
+// took from 71 to 99 with no trend: 2 pixels is the middle of that range, not a sharp
+// optimum.
 constexpr double continuation_zone = 2.0;
 // Auto acts where the zone is at most this many pixels (a factor of at least 2). Nearer to
 // resolved, a factor below 2 changes the scene too little to save iterations (a 64^2 test
