@@ -193,19 +193,17 @@ void bugnicourt_separable(Formulation &f, const LocalTerm &psi, Monitor &monitor
   // cut: while the contact set still moves, pixels cross the adhesive zone in a few steps,
   // and the correction would only lengthen their moves.
   const auto own_correction = [&](std::int64_t i) {
-    return x[i] > lower ? psi.preconditioner_correction(e[i]) : 0.0;
+    return !cut_before && x[i] > lower ? psi.preconditioner_correction(e[i]) : 0.0;
   };
   // The new direction, the descent along it and the local term's curvature there: conjugate
   // to the last direction (product() is H d_old at the iterate it started from,
   // last_curvature d_old.H d_old), or steepest where that is not positive. Preconditioned,
-  // with the correction for the pixels' own curvature after a step that was not cut.
+  // with the correction for the pixels' own curvature.
   const auto direct = [&](const Projection &p, double last_curvature) {
-    if (!preconditioned) return passes.direct(x, gradient, p, d.data(), local_curvature);
-    if (cut_before)
-      return passes.direct_preconditioned(x, gradient, p, product, last_curvature, z.data(),
-                                          d.data(), local_curvature, none);
-    return passes.direct_preconditioned(x, gradient, p, product, last_curvature, z.data(),
-                                        d.data(), local_curvature, own_correction);
+    return preconditioned
+               ? passes.direct_preconditioned(x, gradient, p, product, last_curvature, z.data(),
+                                              d.data(), local_curvature, own_correction)
+               : passes.direct(x, gradient, p, d.data(), local_curvature);
   };
   // The history's objective needs the gradient: written into the trial array qy, free until
   // the next trial.

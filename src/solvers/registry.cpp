@@ -35,8 +35,8 @@ std::vector<OptionSpec> common_options() {
       {"range_continuation", OptionType::real, 0, 0, 1e6, false, {},
        "with exponential adhesion, solve a cold start first with the range times this "
        "factor (>= 1) to 1e-2, then with the scene's own range (0: none; \"auto\": the "
-       "factor that makes the cohesive zone 2 pixels long, where the grid does not resolve "
-       "it)"},
+       "factor that makes the cohesive zone 2 pixels long, where it is at most half a "
+       "pixel)"},
   };
 }
 
