@@ -15,7 +15,12 @@ namespace asp {
 
 class LocalTerm {
  public:
-  explicit LocalTerm(const ExponentialPotential &potential)
+  // eager: whether the pixels near the instability jump eagerly (eager(), below);
+  // relaxed_stiffness: then the stiffness of falls_to_wall's one-pixel model, a pixel's with
+  // the surface around it relaxing, in units of the scaled Hessian's pixel stiffness
+  // (Substrate::self_compliance): 1 on a free substrate and 0.74 on a large periodic
+  // half-space.
+  LocalTerm(const ExponentialPotential &potential, bool eager, double relaxed_stiffness)
       : value_per_state_(potential.phi(0.0)),
         slope_per_state_(potential.dphi(0.0)),
         curvature_per_state_(potential.d2phi(0.0)),
@@ -29,7 +34,14 @@ class LocalTerm {
         // range 2^-60 per unknown, the curvature by less than 2^-60/range per unknown
         // (against the unit pixel stiffness of the scaled Hessian).
         negligible_beyond_(potential.range *
-                           (std::log(potential.dphi(0.0)) + 60.0 * std::log(2.0))) {}
+                           (std::log(potential.dphi(0.0)) + 60.0 * std::log(2.0))),
+        eager_(eager),
+        relaxed_stiffness_(relaxed_stiffness),
+        // psi''(t) = -relaxed_stiffness there; none (-inf) where psi'' never reaches it.
+        relaxed_instability_(
+            -potential.d2phi(0.0) > relaxed_stiffness
+                ? potential.range * std::log(-potential.d2phi(0.0) / relaxed_stiffness)
+                : -HUGE_VAL) {}
 
   // exp(-x/range), or 0 where that makes no difference (above).
   double state(double x) const { return x > negligible_beyond_ ? 0.0 : std::exp(-x / range_); }
@@ -38,6 +50,13 @@ class LocalTerm {
   double slope_per_state() const { return slope_per_state_; }
   double curvature_per_state() const { return curvature_per_state_; }
   double negligible_beyond() const { return negligible_beyond_; }
+  // Whether the pixels near the instability jump eagerly: in every step of a solve, cut or
+  // not, onto the wall where falls_to_wall's one-pixel model with the relaxed stiffness has
+  // no rest off it. Otherwise only after steps that were not cut, and onto the wall only the
+  // pixels unstable on their own. The formulation decides (PrimalFormulation::
+  // snaps_eagerly): eagerly on cold solves far from resolving the cohesive zone.
+  bool eager() const { return eager_; }
+  double relaxed_stiffness() const { return relaxed_stiffness_; }
   // An unknown's own curvature in this state, the others held: the scaled Hessian's unit
   // pixel stiffness plus psi''. Below 1 near the wall, where the adhesion pulls the harder the
   // closer the surface comes.
@@ -62,6 +81,28 @@ class LocalTerm {
     const double own = own_curvature(state);
     if (!(own > 0.0 && own < 1.0)) return 0.0;
     return 1.0 / (own > smallest_own_curvature ? own : smallest_own_curvature) - 1.0;
+  }
+
+  // Whether an unknown at x above the bound lower, in this state and with the quadratic
+  // part's gradient q there, goes onto the wall in a jump. Not eager: where it is unstable on
+  // its own and the objective falls toward the wall (a positive gradient). Eager: where it
+  // has no rest above the bound in the one-unknown model with the relaxed stiffness k:
+  // whether that model's slope
+  //     m'(t) = q + k (t - x) + psi'(t)
+  // is positive all the way from x down to the bound, so that the objective falls along the
+  // way and the unknown comes to rest on the wall. m' is convex (psi''' > 0) with its minimum
+  // where psi''(t*) = -k, psi'(t*) = k range there; so the test is m'(x) > 0 below t*, and
+  // m'(t*) = q + k (t* - x + range) > 0 above it. Where t* is not above the bound, m' rises
+  // over the feasible side and the wall is reached only by moving along the gradient. Above
+  // t* this finds the pixels that have lost their rest off the wall before they become
+  // unstable on their own: a conjugate gradient moves them there over many iterations, their
+  // curvature along its directions falling to nothing on the way (docs/algorithms.md, "The
+  // pixels near the wall").
+  bool falls_to_wall(double x, double q, double state, double lower) const {
+    if (!eager_) return unstable_alone(state) && q + slope_per_state_ * state > 0.0;
+    if (!(relaxed_instability_ > lower)) return false;
+    if (x < relaxed_instability_) return q + slope_per_state_ * state > 0.0;
+    return q + relaxed_stiffness_ * (relaxed_instability_ - x + range_) > 0.0;
   }
 
   // Where an unknown at x, with the quadratic part's gradient q there, comes to rest beyond
@@ -90,6 +131,8 @@ class LocalTerm {
  private:
   double value_per_state_, slope_per_state_, curvature_per_state_, range_;
   double negligible_beyond_;
+  bool eager_;
+  double relaxed_stiffness_, relaxed_instability_;
 };
 
 }  // namespace asp

@@ -122,6 +122,15 @@ class PrimalFormulation final : public ScaledFormulation {
   // For finish() under load control without adhesion at zero load: the iterate moved
   // uniformly until it touches the wall (its energy unchanged).
   void touch_at_zero_load();
+  // Whether the pixels near the adhesion's instability jump eagerly (LocalTerm::eager): on
+  // a cold solve (a start without pressure, or a state that an earlier stage of the same
+  // solve left: coarse levels, a continuation in the range) of a scene whose cohesive zone is
+  // at most half a pixel (far_from_resolved). No branch is to be kept there, and the eager
+  // jumps reach states of lower energy in fewer iterations. On a warm start the pixels jump
+  // as before, so that a sweep's solve stays on the branch its start is on; nearer to
+  // resolved, too, where the eager jumps cost iterations (docs/algorithms.md, "The pixels
+  // near the wall").
+  bool snaps_eagerly() const;
 
   // Scaled, in u (0 under mean-gap and load control, where it does not matter).
   double penetration_;

@@ -75,6 +75,8 @@ class FreeHalfSpace final : public Substrate {
   const Field &normalised_stiffness() const override;
   // 1/C(0): the pressure that, on one pixel alone, displaces that pixel by one length unit.
   double pixel_stiffness() const override { return pixel_stiffness_; }
+  // The pixel's own influence coefficient, whose inverse is the scale.
+  double self_compliance() const override { return 1.0 / pixel_stiffness_; }
 
   bool has_k0() const override { return false; }
   // Throw Error(unsupported) naming 'system': a free half-space has no K~(0).

@@ -44,22 +44,27 @@ PeriodicHalfSpace::PeriodicHalfSpace(const Grid &grid, std::unique_ptr<const Sti
   // not be monotonic (a layer's dips below its K~(0) before it rises), so the extremes are
   // taken over every mode.
   double extremes[2] = {-k0_, k0_};  // -(smallest), largest
-  nonzero_stiffness_sum_ = 0.0;
+  double sums[2] = {0.0, 0.0};  // of weight * K~(q) and weight / K~(q) over q != 0
   layout_.for_each([&](std::int64_t, double q, double weight) {
     if (!(q > 0.0)) return;
     const double k = stiffness_at(q);
-    nonzero_stiffness_sum_ += weight * k;
+    sums[0] += weight * k;
+    sums[1] += weight / k;
     extremes[0] = std::fmax(extremes[0], -k);
     extremes[1] = std::fmax(extremes[1], k);
   });
-  grid.reductions().combine_sums(&nonzero_stiffness_sum_, 1);
+  grid.reductions().combine_sums(sums, 2);
   grid.reductions().combine_maxima(extremes, 2);
+  nonzero_stiffness_sum_ = sums[0];
+  nonzero_compliance_sum_ = sums[1];
   pixel_stiffness_ = (nonzero_stiffness_sum_ + k0_) / n;
+  self_compliance_ = (nonzero_compliance_sum_ + 1.0 / k0_) / n;
 
   const double k_min = -extremes[0];
   const double k_max = extremes[1];
   if (!normal(k_min) || !normal(n * k_max) || !normal(1.0 / (n * k_min)) ||
-      !normal(pixel_stiffness_) || !normal(nonzero_stiffness_sum_ + k0_))
+      !normal(pixel_stiffness_) || !normal(nonzero_stiffness_sum_ + k0_) ||
+      !normal(self_compliance_))
     throw Error(Status::invalid_argument,
                 "argument 'contact_modulus' is " + format_number(modulus_) +
                     ": on this grid the stiffness " + law_->formula() +
@@ -78,12 +83,15 @@ void PeriodicHalfSpace::set_k0(double k0) {
   require_positive(k0, "k0");
   const double n = static_cast<double>(grid_.n_pixels());
   const double pixel = (nonzero_stiffness_sum_ + k0) / n;
-  if (!normal(n * k0) || !normal(1.0 / (n * k0)) || !normal(pixel))
+  const double self = (nonzero_compliance_sum_ + 1.0 / k0) / n;
+  if (!normal(n * k0) || !normal(1.0 / (n * k0)) || !normal(pixel) || !normal(self))
     throw Error(Status::invalid_argument,
                 "argument 'k0' is " + format_number(k0) +
-                    ": its inverse or the pixel stiffness would not be a finite, normal double");
+                    ": its inverse, the pixel stiffness or the pixel's own compliance would "
+                    "not be a finite, normal double");
   k0_ = k0;
   pixel_stiffness_ = pixel;
+  self_compliance_ = self;
   // The q = 0 entry is the first of the half spectrum (on the process holding it).
   if (layout_.is_mean(0)) {
     if (!compliance_.empty()) compliance_[0] = 1.0 / (n * k0_);

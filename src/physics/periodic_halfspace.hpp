@@ -50,6 +50,7 @@ class PeriodicHalfSpace final : public Substrate {
   const Field &normalised_compliance() const override;
   const Field &normalised_stiffness() const override;
   double pixel_stiffness() const override { return pixel_stiffness_; }
+  double self_compliance() const override { return self_compliance_; }
 
   bool has_k0() const override { return true; }
   double k0() const override { return k0_; }
@@ -77,6 +78,8 @@ class PeriodicHalfSpace final : public Substrate {
   double k0_;
   double pixel_stiffness_ = 0.0;
   double nonzero_stiffness_sum_ = 0.0;  // sum over q != 0 of weight * K~(q)
+  double nonzero_compliance_sum_ = 0.0;  // sum over q != 0 of weight / K~(q)
+  double self_compliance_ = 0.0;
   // Made on first use (a solver that needs neither pays for neither).
   mutable Field compliance_;  // 1/(N K~) on the half spectrum
   mutable Field stiffness_;   // K~/N

@@ -37,6 +37,12 @@ struct Resolution {
 
 // The cohesive zone, in pixels, below which the grid is said not to resolve the interaction.
 constexpr double resolution_threshold = 1.0;
+// The cohesive zone, in pixels, at or below which the grid is far from resolving it: the
+// adhesive curvature at the wall is then several pixel stiffnesses, and the contact lines
+// settle a pixel at a time. Two treatments act only there, where they were measured to help:
+// the continuation in the range's "auto" (solvers/range_continuation.hpp) and the eager
+// jumps of bugnicourt's pixels near the wall (PrimalFormulation::snaps_eagerly).
+constexpr double far_from_resolved = 0.5;
 
 // The resolution of the system's interaction on its grid. Reads parameters only: no
 // transform, no potential callback.

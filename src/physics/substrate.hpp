@@ -82,6 +82,11 @@ class Substrate {
   // The stiffness scale of one pixel, which turns gap residuals into pressures in the error
   // measure and sets the units of a solve (each substrate says which scale it uses).
   virtual double pixel_stiffness() const = 0;
+  // The displacement of a pixel per unit pressure on it alone, every other pixel free: the
+  // diagonal of K^-1. Its inverse is a pixel's stiffness when the surface around it relaxes,
+  // below pixel_stiffness() on a periodic substrate (whose scale is the diagonal of K) and
+  // equal to it on a free one (whose scale is this one's inverse).
+  virtual double self_compliance() const = 0;
 
   // The mean (q = 0) displacement mode. A periodic half-space has no stiffness there of its
   // own: K~(0) is a convention that links mean pressure and mean displacement, and the user

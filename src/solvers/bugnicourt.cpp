@@ -142,13 +142,13 @@ void bugnicourt(Formulation &f, Monitor &monitor, bool preconditioned) {
 // step is taken instead. On the contact-mechanics challenge's scene at 1024^2 to 4096^2 this
 // cut the iterations 1.5 to 2.6 times. Along the plain gradient it changed little on nested
 // grids and led one cold solve to a state of much higher energy (docs/performance.md), so
-// there the step stays the safe one. Preconditioned, after a step that was not cut (by the
-// bound or by jumps), two things treat the pixels near the wall, which a step along d would
-// settle only over many iterations (docs/algorithms.md, "The pixels near the wall"): the
-// first trial makes those that the adhesion makes unstable on their own jump across the
-// instability, onto the wall where it pulls them in and off it where the elastic field tears
-// them off (BugnicourtPasses::trial), and the preconditioner is corrected for the free
-// pixels' own curvature (own_correction, below). The conjugate direction uses
+// there the step stays the safe one. Preconditioned, two things treat the pixels near the
+// wall, which a step along d would settle only over many iterations (docs/algorithms.md,
+// "The pixels near the wall"): the first trial of a step makes them jump across the
+// adhesion's instability, onto the wall and off it (BugnicourtPasses::trial; which pixels,
+// and after which steps, LocalTerm::eager says), and after a step that was not cut (by the
+// bound or by jumps) the preconditioner is corrected for the free pixels' own curvature
+// (own_correction, below). The conjugate direction uses
 // beta = r.Hd / d.Hd (H at the iterate the step started from), restarting where that
 // curvature is not positive.
 // Q's gradient q is followed from Q's Hessian product as in the quadratic case, and the local
@@ -184,7 +184,8 @@ void bugnicourt_separable(Formulation &f, const LocalTerm &psi, Monitor &monitor
   // psi''(x_i) d_i^2: the local term's part of the curvature along the new direction.
   const auto local_curvature = [&](std::int64_t i, double di) { return bend * e[i] * di * di; };
   // Whether the last step was cut (by the bound or by jumps); until a step that was not, the
-  // preconditioner is the plain one and the trials make no jumps.
+  // preconditioner is the plain one and, unless the local term is eager, the trials make no
+  // jumps.
   bool cut_before = true;
   // The preconditioner's correction for the free pixels' own curvature (docs/algorithms.md,
   // "The pixels near the wall"; LocalTerm::preconditioner_correction): longer moves along
@@ -245,11 +246,13 @@ void bugnicourt_separable(Formulation &f, const LocalTerm &psi, Monitor &monitor
     // The change of the objective from x to the trial point x + alpha d (cut and rescaled),
     // which goes into the trial arrays.
     bool cut = false;
-    // Preconditioned, the first trial after a step that was not cut also makes the pixels
-    // that strong adhesion makes unstable jump across the instability, onto the wall or off
-    // it (BugnicourtPasses::trial); a retry moves along d alone. A trial with jumps counts
-    // as cut, so that the step after it makes none.
-    bool jumps = preconditioned && !cut_before;
+    // Preconditioned, the first trial also makes the pixels near the adhesion's instability
+    // jump across it, onto the wall or off it (BugnicourtPasses::trial): after a step that
+    // was not cut, and where the local term is eager after a cut one too, since while the
+    // bound cuts every step the contact lines would otherwise move a pixel or so per
+    // iteration. A retry moves along d alone. A trial with jumps counts as cut, so that the
+    // step after it has no correction of the preconditioner and, unless eager, no jumps.
+    bool jumps = preconditioned && (psi.eager() || !cut_before);
     const auto trial = [&](double alpha) {
       const Trial t =
           passes.trial(x, d.data(), alpha, q, k.data(), c.data(), e, psi, y, qy, ey, jumps);

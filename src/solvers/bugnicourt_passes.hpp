@@ -224,14 +224,16 @@ class BugnicourtPasses {
   // and the states. Q changes by (y - x).(q + qy)/2, exactly for a quadratic, so that the
   // objective at the trial point needs no transform unless the bound cut the step (then qy is
   // evaluated, and quadratic_change gives the change again).
-  // With jumps (and no mean constraint), an unknown that the local term makes unstable on its
-  // own (LocalTerm::unstable_alone) jumps across the instability instead of moving along d:
-  //  - a snap: free, where the objective falls toward the bound (a positive gradient), it
-  //    goes onto the bound (a pixel near the wall that strong adhesion pulls in);
-  //  - a peel: on the bound or free, where the objective falls away from the bound (a
-  //    negative gradient), it goes where it comes to rest beyond the instability, the others
-  //    held (LocalTerm::rest_beyond_instability; a pixel that the elastic field tears off the
-  //    wall);
+  // With jumps (and no mean constraint), the unknowns near the local term's instability jump
+  // across it instead of moving along d:
+  //  - a snap: free, where the objective falls all the way to the bound
+  //    (LocalTerm::falls_to_wall: unstable on its own with a positive gradient, or, where the
+  //    local term is eager, with no rest above the bound in its one-unknown model), it goes
+  //    onto the bound (a pixel near the wall that strong adhesion pulls in);
+  //  - a peel: unstable on its own (LocalTerm::unstable_alone), on the bound or free, where
+  //    the objective falls away from the bound (a negative gradient), it goes where it comes
+  //    to rest beyond the instability, the others held (LocalTerm::rest_beyond_instability; a
+  //    pixel that the elastic field tears off the wall);
   // both of which a step along d makes only over many iterations (bugnicourt.cpp). A jump
   // counts as a cut.
   Trial trial(const double *x, const double *d, double alpha, const double *q, const double *k,
@@ -255,10 +257,11 @@ class BugnicourtPasses {
       return loops::sums<4>(reductions_, n_, [&](std::int64_t i, double *sum) {
         const double moved = x[i] + alpha * d[i];
         // Only the bounded unknowns have psi.
-        const bool unstable = jumping && i < bounded_ && psi.unstable_alone(states[i]);
+        const bool near = jumping && i < bounded_;
         const double gradient = q[i] + slope * states[i];
-        const bool snapped = unstable && x[i] > bound(i) && gradient > 0.0;
-        const bool peeled = unstable && gradient < 0.0;
+        const bool snapped =
+            near && x[i] > bound(i) && psi.falls_to_wall(x[i], q[i], states[i], bound(i));
+        const bool peeled = near && psi.unstable_alone(states[i]) && gradient < 0.0;
         const double yi = snapped  ? bound(i)
                           : peeled ? psi.rest_beyond_instability(x[i], q[i])
                                    : (moved > bound(i) ? moved : bound(i)) * scale + level;

@@ -15,6 +15,7 @@
 // continuation_largest_zone pixels, and none where it is longer).
 #pragma once
 
+#include "physics/resolution.hpp"
 #include "physics/system.hpp"
 #include "solvers/algorithm.hpp"
 #include "solvers/monitor.hpp"
@@ -33,7 +34,7 @@ constexpr double continuation_zone = 2.0;
 // resolved, a factor below 2 changes the scene too little to save iterations (a 64^2 test
 // scene with a zone of 0.65 pixels: 65 iterations against 55) and led one 128^2 test scene
 // to another metastable state, 1.5e-3 higher in energy (test_range_continuation.cpp).
-constexpr double continuation_largest_zone = 0.5;
+constexpr double continuation_largest_zone = far_from_resolved;
 // The first stage's tolerance (or the solve's own if looser): its state is a start, and one
 // tighter than this spent iterations the second stage did not get back on that scene.
 constexpr double continuation_tolerance = 1e-2;

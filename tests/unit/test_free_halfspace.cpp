@@ -147,6 +147,7 @@ TEST(FreeHalfSpace, CoefficientsAreLovesSolution) {
   p[0] = 1.0;  // a unit pressure on the corner pixel
   substrate.displacement_from_pressure(p.data(), u.data());
   EXPECT_NEAR(u[0], self, 1e-13 * self);
+  EXPECT_NEAR(substrate.self_compliance(), self, 1e-14 * self);
   for (const auto offset : {std::make_pair(20, 0), std::make_pair(0, 40), std::make_pair(30, 30),
                             std::make_pair(63, 17)}) {
     const double x = offset.first * dx, y = offset.second * dx, r = std::hypot(x, y);

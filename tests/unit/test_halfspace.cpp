@@ -102,4 +102,24 @@ TEST(PeriodicHalfSpace, PixelStiffnessIsTheDiagonalOfK) {
   EXPECT_NEAR(p[13], substrate.pixel_stiffness(), 1e-12 * p[13]);
 }
 
+// The self compliance is the diagonal of K^-1: the displacement of a pixel under a unit
+// pressure on it alone, through K~(0) too; on a half-space its inverse lies below the
+// diagonal of K (the surface around the pixel gives way), 1/1.35 of it on a large square grid
+// (the means of |q| and 1/|q| over the square Brillouin zone).
+TEST(PeriodicHalfSpace, SelfComplianceIsTheDiagonalOfTheInverseOfK) {
+  auto grid = asp_test::grid_2d(10, 7, 1.0, 1.0);
+  asp::PeriodicHalfSpace substrate(*grid, 1.0);
+  asp::Field u = grid->make_field(), p = grid->make_field();
+  p[13] = 1.0;
+  substrate.displacement_from_pressure(p.data(), u.data());
+  EXPECT_NEAR(u[13], substrate.self_compliance(), 1e-12 * u[13]);
+  substrate.set_k0(5.0);
+  substrate.displacement_from_pressure(p.data(), u.data());
+  EXPECT_NEAR(u[13], substrate.self_compliance(), 1e-12 * u[13]);
+
+  auto large = asp_test::grid_2d(512, 512, 1.0, 1.0);
+  asp::PeriodicHalfSpace square(*large, 1.0);
+  EXPECT_NEAR(1.0 / (square.pixel_stiffness() * square.self_compliance()), 1.0 / 1.35, 0.01);
+}
+
 }  // namespace

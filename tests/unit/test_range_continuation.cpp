@@ -362,6 +362,10 @@ ByHand solve_by_hand(const Scene &s, double factor, double tolerance, bool level
   system->set_adhesion(s.work, s.range);
   asp::Solver second = gap_solver(0.0, tolerance);
   second.set_history(true);
+  // The second stage is part of a cold solve: the state the first stage left is the solve's
+  // (as the continued solve marks it), so that its pixels near the wall jump as a cold
+  // solve's do (LocalTerm::eager), not as a warm start's.
+  system->set_state_held_by_solve(true);
   second.solve(*system, Control::penetration, s.penetration);
   out.second = outcome_of(second, *system);
   return out;
