@@ -92,8 +92,9 @@ class LocalTerm {
   // is positive all the way from x down to the bound, so that the objective falls along the
   // way and the unknown comes to rest on the wall. m' is convex (psi''' > 0) with its minimum
   // where psi''(t*) = -k, psi'(t*) = k range there; so the test is m'(x) > 0 below t*, and
-  // m'(t*) = q + k (t* - x + range) > 0 above it. Where t* is not above the bound, m' rises
-  // over the feasible side and the wall is reached only by moving along the gradient. Above
+  // m'(t*) = q + k (t* - x + range) > 0 above it. Where t* is not above the bound the model
+  // has no instability on the feasible side: nothing jumps, and a pixel reaches the wall by
+  // moving along the direction, as without adhesion. Above
   // t* this finds the pixels that have lost their rest off the wall before they become
   // unstable on their own: a conjugate gradient moves them there over many iterations, their
   // curvature along its directions falling to nothing on the way (docs/algorithms.md, "The
@@ -106,24 +107,26 @@ class LocalTerm {
   }
 
   // Where an unknown at x, with the quadratic part's gradient q there, comes to rest beyond
-  // the instability, the others held, when the objective falls away from the wall
-  // (q + psi'(x) < 0): the root of m'(t) = q + (t - x) + psi'(t), the derivative of the
-  // one-unknown model
-  //     m(t) = q (t - x) + (t - x)^2 / 2 + psi(t),
-  // on the side where m is convex. m' is decreasing while 1 + psi'' < 0 and convex
-  // increasing beyond (psi''' > 0), so that root is its only one above x. Newton's method
-  // starts from t = x - q, the rest point without the adhesion, where m' = psi'(t) > 0: from
-  // the right of the root of a convex increasing function it falls monotonically onto the
-  // root, every iterate a point where m' > 0 still. Twelve steps reach rounding from the
-  // starts the formulation's units produce; where the root is a near-double one (the outer
-  // minimum about to vanish) Newton's method slows, and the last iterate lies right of it.
+  // the instability when the objective falls away from the wall (q + psi'(x) < 0): the root
+  // of m'(t) = q + k (t - x) + psi'(t), the derivative of the one-unknown model
+  //     m(t) = q (t - x) + k (t - x)^2 / 2 + psi(t),
+  // on the side where m is convex, with k = 1 (the others held), or the relaxed stiffness
+  // where the term is eager, so that a pixel peeled off the wall lands where falls_to_wall
+  // does not send it back. m' is decreasing while k + psi'' < 0 and convex increasing beyond
+  // (psi''' > 0), so that root is its only one above x. Newton's method starts from
+  // t = x - q/k, the rest point without the adhesion, where m' = psi'(t) > 0: from the right
+  // of the root of a convex increasing function it falls monotonically onto the root, every
+  // iterate a point where m' > 0 still. Twelve steps reach rounding from the starts the
+  // formulation's units produce; where the root is a near-double one (the outer minimum
+  // about to vanish) Newton's method slows, and the last iterate lies right of it.
   double rest_beyond_instability(double x, double q) const {
-    double t = x - q;
+    const double k = eager_ ? relaxed_stiffness_ : 1.0;
+    double t = x - q / k;
     for (int step = 0; step < 12; ++step) {
       const double s = state(t);
-      const double curvature = own_curvature(s);
+      const double curvature = k + curvature_per_state_ * s;
       if (!(curvature > 0.0)) break;
-      t -= (q + (t - x) + slope_per_state_ * s) / curvature;
+      t -= (q + k * (t - x) + slope_per_state_ * s) / curvature;
     }
     return t;
   }

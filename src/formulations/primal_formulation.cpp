@@ -371,12 +371,16 @@ bool PrimalFormulation::finish() {
 
 bool PrimalFormulation::snaps_eagerly() const {
   if (!adhesive_) return false;
-  // Nearer to resolved the eager jumps cost iterations: on the challenge's scene at 1024^2
-  // with zones of 0.52 and 0.62 pixel, 79 and 118 against 52 and 72.
+  // Nearer to resolved the eager jumps cost iterations. On the challenge's scene
+  // (asperity_challenge --range-scale) at 1024^2, zones of 0.52, 0.62 and 0.75 pixel took
+  // 141, 177 and 225 iterations eagerly against 94, 93 and 71 (at 2048^2, 0.52 and 0.62:
+  // 513 and 157 against 124 and 98); at 0.35 and 0.43 pixel 45 and 84 against 102 and 123
+  // (at 2048^2 73 and 117 against 171 and 211).
   if (!(resolution(system_).ratio <= far_from_resolved)) return false;
   // Before this formulation holds the state (hold_state, in the constructor), a solve holds
-  // it only where an earlier stage of it left it: coarse levels or the first stage of a
-  // continuation in the range, which both run on cold starts only.
+  // it only where the state is a cold solve's own: on a coarse level (nested_grids.cpp), and
+  // in both stages of a continuation in the range (solver.cpp), which run on cold starts
+  // only.
   return system_.state_held_by_solve() || !system_.carries_pressure();
 }
 

@@ -90,6 +90,10 @@ void cascade(const AlgorithmSpec &algorithm, const OptionValues &options, System
   Monitor monitor(level);
   {
     const ThreadScope threads(coarse->grid().threads());
+    // A coarse level's solve is part of a cold solve, whatever its state (prolonged from the
+    // level below, or the surfaces at rest): what the formulations ask of a cold start
+    // (PrimalFormulation::snaps_eagerly) holds for it.
+    coarse->set_state_held_by_solve(true);
     algorithm.run(*coarse, control, coarse_value, options, monitor);
   }
   coarse->set_state_held_by_solve(false);

@@ -447,6 +447,27 @@ TEST(LocalTerm, RestBeyondTheInstabilityIsTheRootOfTheModelsSlope) {
   // Every start is unstable (the least, 0.2 from the wall with the weaker work and the
   // shorter range: 1 + psi'' = 1 - 50 e^-2 = -5.8): 12 starts, 3 pulls each.
   EXPECT_EQ(cases, 36);
+
+  // Eager, the model's stiffness is the relaxed one, k: the root of q + k (t - x) + psi'(t),
+  // where k + psi'' > 0, from which falls_to_wall does not send the pixel back (with q
+  // followed to t in the same model).
+  const double k = 0.74;
+  const asp::LocalTerm eager(asp::ExponentialPotential{1.0, 0.2}, true, k);
+  for (double x : {0.0, 0.05, 0.2, 0.6}) {
+    for (double pull : {1e-6, 1e-3, 1.0, 1e3}) {
+      const double e = eager.state(x);
+      const double q = -pull - eager.slope_per_state() * e;
+      const double t = eager.rest_beyond_instability(x, q);
+      const double et = eager.state(t);
+      const double slope = q + k * (t - x) + eager.slope_per_state() * et;
+      const double largest =
+          std::max({std::fabs(q), k * std::fabs(t - x), eager.slope_per_state() * et});
+      EXPECT_NEAR(slope, 0.0, 8.0 * epsilon * largest) << x << " " << pull;
+      EXPECT_GT(k + eager.curvature_per_state() * et, 0.0) << x << " " << pull;
+      EXPECT_GT(t, x);
+      EXPECT_FALSE(eager.falls_to_wall(t, q + k * (t - x), et, 0.0)) << x << " " << pull;
+    }
+  }
 }
 
 // The preconditioner's correction for an unknown's own curvature c = 1 + psi'': none out of

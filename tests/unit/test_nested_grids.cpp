@@ -243,6 +243,46 @@ INSTANTIATE_TEST_SUITE_P(
              (info.param.substrate == asp::SubstrateKind::free ? "_free" : "");
     });
 
+// Every coarse level's solve is part of a cold solve: the system it runs on is held by the
+// solve (System::state_held_by_solve), also where its state, prolonged from the level below,
+// carries pressure, so that the formulations take it for the cold start it is
+// (PrimalFormulation::snaps_eagerly). An algorithm that records the flag and presses the
+// surface uniformly stands in for a solver, so that each level above the coarsest starts from
+// a prolonged state with pressure. This failed before the coarse levels were held.
+struct CoarseStart {
+  bool held = false;
+  bool carries_pressure = false;
+};
+std::vector<CoarseStart> coarse_starts;
+
+void record_and_press(asp::System &system, Control, double, const asp::OptionValues &,
+                      asp::Monitor &) {
+  coarse_starts.push_back({system.state_held_by_solve(), system.carries_pressure()});
+  for (double &p : system.state().pressure) p = 1e-3;
+}
+
+TEST(NestedGrids, EveryCoarseLevelIsSolvedAsAColdSolvesOwn) {
+  auto grid = asp_test::grid_2d(64, 64, 1.0, 1.0);
+  const auto heights = asp_test::rough_surface(*grid, 9, 0.1);
+  asp::System system(grid, 1.0);
+  system.set_topography(heights.data());
+  asp::AlgorithmSpec recorder;
+  recorder.name = "recorder";
+  recorder.run = record_and_press;
+  coarse_starts.clear();
+  const asp::CoarseWork work =
+      asp::solve_coarse_levels(recorder, asp::OptionValues{}, system, Control::penetration,
+                               0.3 * system.height_range(), 3, asp::MonitorSettings{});
+  ASSERT_EQ(coarse_starts.size(), 3u);
+  EXPECT_FALSE(coarse_starts[0].carries_pressure);  // the coarsest starts at rest
+  for (std::size_t level = 0; level < coarse_starts.size(); ++level) {
+    EXPECT_TRUE(coarse_starts[level].held) << "level " << level;
+    if (level > 0) EXPECT_TRUE(coarse_starts[level].carries_pressure) << "level " << level;
+  }
+  EXPECT_TRUE(work.prolonged);
+  EXPECT_TRUE(system.carries_pressure());
+}
+
 // ---- adhesion -------------------------------------------------------------------------------
 // The adhesive rough scenes of test_adhesion.cpp (64^2, ranges of 10 and 1 times the pixel's
 // compliance length, largest tensile stress 1 and 100 times the pressure scale) under

@@ -340,7 +340,8 @@ TEST(RangeContinuation, AutoActsOnlyOnAColdUnresolvedAdhesiveSolve) {
 // The stages done by hand: with the range F rho, a plain solve (range_continuation 0) to
 // max(tolerance, 1e-2), its coarse levels (if any) solved on the way, their tolerance derived
 // from that one as the continued solve derives theirs from its first stage's; then the range
-// rho and a warm solve to the solve's tolerance. The continued solve must do exactly this:
+// rho and a second solve from that state to the solve's tolerance, marked as the cold
+// solve's own (as the continued solve holds it). The continued solve must do exactly this:
 // the same iterations, evaluations and transforms (the sums; the coarse levels' transforms
 // are in the first solve's), the same state bit for bit (the same operations in the same
 // order: nothing may differ but the bookkeeping), and a history that is the first solve's
