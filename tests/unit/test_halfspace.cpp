@@ -90,32 +90,24 @@ TEST(PeriodicHalfSpace, EnergyGradientMatchesFiniteDifferences) {
   }
 }
 
-TEST(PeriodicHalfSpace, PixelStiffnessIsTheDiagonalOfK) {
+// The pixel stiffness is the diagonal of K and the self compliance that of K^-1: the pressure
+// on a pixel displaced alone by one unit, and the displacement of a pixel under a unit
+// pressure on it alone, through K~(0) too (the default and a set one). On a half-space the
+// inverse of the self compliance lies below the pixel stiffness (the surface around the
+// pixel gives way), 1/1.35 of it on a large square grid (the means of |q| and 1/|q| over the
+// square Brillouin zone).
+TEST(PeriodicHalfSpace, PixelStiffnessAndSelfComplianceAreTheDiagonalsOfKAndItsInverse) {
   auto grid = asp_test::grid_2d(10, 7, 1.0, 1.0);
   asp::PeriodicHalfSpace substrate(*grid, 1.0);
-  asp::Field u = grid->make_field(), p = grid->make_field();
-  u[13] = 1.0;
-  substrate.pressure_from_displacement(u.data(), p.data());
-  EXPECT_NEAR(p[13], substrate.pixel_stiffness(), 1e-12 * p[13]);
-  substrate.set_k0(5.0);
-  substrate.pressure_from_displacement(u.data(), p.data());
-  EXPECT_NEAR(p[13], substrate.pixel_stiffness(), 1e-12 * p[13]);
-}
-
-// The self compliance is the diagonal of K^-1: the displacement of a pixel under a unit
-// pressure on it alone, through K~(0) too; on a half-space its inverse lies below the
-// diagonal of K (the surface around the pixel gives way), 1/1.35 of it on a large square grid
-// (the means of |q| and 1/|q| over the square Brillouin zone).
-TEST(PeriodicHalfSpace, SelfComplianceIsTheDiagonalOfTheInverseOfK) {
-  auto grid = asp_test::grid_2d(10, 7, 1.0, 1.0);
-  asp::PeriodicHalfSpace substrate(*grid, 1.0);
-  asp::Field u = grid->make_field(), p = grid->make_field();
-  p[13] = 1.0;
-  substrate.displacement_from_pressure(p.data(), u.data());
-  EXPECT_NEAR(u[13], substrate.self_compliance(), 1e-12 * u[13]);
-  substrate.set_k0(5.0);
-  substrate.displacement_from_pressure(p.data(), u.data());
-  EXPECT_NEAR(u[13], substrate.self_compliance(), 1e-12 * u[13]);
+  asp::Field unit = grid->make_field(), out = grid->make_field();
+  unit[13] = 1.0;
+  for (const bool set_k0 : {false, true}) {
+    if (set_k0) substrate.set_k0(5.0);
+    substrate.pressure_from_displacement(unit.data(), out.data());
+    EXPECT_NEAR(out[13], substrate.pixel_stiffness(), 1e-12 * out[13]) << set_k0;
+    substrate.displacement_from_pressure(unit.data(), out.data());
+    EXPECT_NEAR(out[13], substrate.self_compliance(), 1e-12 * out[13]) << set_k0;
+  }
 
   auto large = asp_test::grid_2d(512, 512, 1.0, 1.0);
   asp::PeriodicHalfSpace square(*large, 1.0);
